@@ -1,0 +1,60 @@
+#include "cuboid.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+    defineTypeNameAndDebug(cuboid, 0);
+    addToRunTimeSelectionTable(rigidBody, cuboid, dictionary);
+}
+}
+
+
+Foam::RBD::cuboid::cuboid(const word& name, const dictionary& dict)
+:
+    rigidBody(name, rigidBodyInertia()),
+    L_(dict.get<vector>("L"))
+{
+    if (!(cmptMin(L_) > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << name << ": edge lengths L " << L_
+            << " must all be positive" << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar m = readPositive(dict, "mass");
+    const vector L2(cmptMultiply(L_, L_));
+
+    setInertia
+    (
+        rigidBodyInertia
+        (
+            m,
+            dict.get<vector>("centreOfMass"),
+            (m/12.0)
+           *symmTensor
+            (
+                L2.y() + L2.z(), 0, 0,
+                L2.x() + L2.z(), 0,
+                L2.x() + L2.y()
+            )
+        )
+    );
+}
+
+
+Foam::autoPtr<Foam::RBD::rigidBody> Foam::RBD::cuboid::clone() const
+{
+    return autoPtr<rigidBody>(new cuboid(*this));
+}
+
+
+void Foam::RBD::cuboid::write(Ostream& os) const
+{
+    os.writeEntry("type", type());
+    os.writeEntry("mass", m());
+    os.writeEntry("L", L_);
+    os.writeEntry("centreOfMass", c());
+}

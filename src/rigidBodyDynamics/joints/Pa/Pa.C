@@ -1,0 +1,55 @@
+#include "Pa.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace joints
+{
+    defineTypeNameAndDebug(Pa, 0);
+    addToRunTimeSelectionTable(joint, Pa, dictionary);
+}
+}
+}
+
+
+Foam::RBD::joints::Pa::Pa(const vector& axis)
+:
+    joint(1),
+    axis_(axis/mag(axis))
+{}
+
+
+Foam::RBD::joints::Pa::Pa(const dictionary& dict)
+:
+    joint(1),
+    axis_(readAxis(dict, "axis"))
+{}
+
+
+Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Pa::clone() const
+{
+    return autoPtr<joint>(new Pa(*this));
+}
+
+
+void Foam::RBD::joints::Pa::jcalc
+(
+    XSvc& J,
+    const scalarField& q,
+    const scalarField& qDot
+) const
+{
+    J.X = spatialTransform(tensor::I, q[qIndex_]*axis_);
+    J.S[0] = spatialVector(Zero, axis_);
+    J.v = qDot[qIndex_]*J.S[0];
+    J.c = Zero;
+}
+
+
+void Foam::RBD::joints::Pa::write(Ostream& os) const
+{
+    joint::write(os);
+    os.writeEntry("axis", axis_);
+}

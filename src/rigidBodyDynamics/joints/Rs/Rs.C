@@ -1,0 +1,110 @@
+#include "Rs.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace joints
+{
+    defineTypeNameAndDebug(Rs, 0);
+    addToRunTimeSelectionTable(joint, Rs, dictionary);
+}
+}
+}
+
+
+Foam::RBD::joints::Rs::Rs()
+:
+    joint(3)
+{}
+
+
+Foam::RBD::joints::Rs::Rs(const dictionary&)
+:
+    joint(3)
+{}
+
+
+Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Rs::clone() const
+{
+    return autoPtr<joint>(new Rs(*this));
+}
+
+
+Foam::quaternion Foam::RBD::joints::Rs::Q(const scalarField& q) const
+{
+    const label i = qIndex_;
+    const vector v(q[i], q[i + 1], q[i + 2]);
+
+    return quaternion(sqrt(max(scalar(0), 1 - magSqr(v))), v);
+}
+
+
+void Foam::RBD::joints::Rs::jcalc
+(
+    XSvc& J,
+    const scalarField& q,
+    const scalarField& qDot
+) const
+{
+    const label i = qIndex_;
+
+    J.X = spatialTransform(Q(q).R().T(), Zero);
+    J.S[0] = spatialVector(1, 0, 0, 0, 0, 0);
+    J.S[1] = spatialVector(0, 1, 0, 0, 0, 0);
+    J.S[2] = spatialVector(0, 0, 1, 0, 0, 0);
+    J.v = spatialVector(vector(qDot[i], qDot[i + 1], qDot[i + 2]), Zero);
+    J.c = Zero;
+}
+
+
+void Foam::RBD::joints::Rs::integrate
+(
+    scalarField& q,
+    const scalarField& q0,
+    const scalarField& dq
+) const
+{
+    const label i = qIndex_;
+    const vector theta(dq[i], dq[i + 1], dq[i + 2]);
+    const scalar magTheta = mag(theta);
+
+    // Exponential of the body-frame rotation vector
+    const scalar s =
+        magTheta > 1e-8
+      ? sin(0.5*magTheta)/magTheta
+      : 0.5*(1 - sqr(magTheta)/24);
+
+    quaternion Qn(Q(q0)*quaternion(cos(0.5*magTheta), s*theta));
+    Qn.normalize();
+
+    if (Qn.w() < 0)
+    {
+        Qn = -Qn;
+    }
+
+    q[i] = Qn.v().x();
+    q[i + 1] = Qn.v().y();
+    q[i + 2] = Qn.v().z();
+}
+
+
+void Foam::RBD::joints::Rs::checkState
+(
+    const scalarField& q,
+    const dictionary& dict
+) const
+{
+    const label i = qIndex_;
+    const vector v(q[i], q[i + 1], q[i + 2]);
+
+    if (magSqr(v) > 1 + 1e-10)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry q: slots " << i << " to " << i + 2 << " " << v
+            << " of the Rs joint are a unit quaternion's vector part and"
+            << " must have length at most 1 (length " << mag(v) << ")" << nl
+            << exit(FatalIOError);
+    }
+}

@@ -1,0 +1,38 @@
+#include "Rx.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace joints
+{
+    defineTypeNameAndDebug(Rx, 0);
+    addToRunTimeSelectionTable(joint, Rx, dictionary);
+}
+}
+}
+
+
+Foam::RBD::joints::Rx::Rx()
+:
+    Ra(vector(1, 0, 0))
+{}
+
+
+Foam::RBD::joints::Rx::Rx(const dictionary&)
+:
+    Ra(vector(1, 0, 0))
+{}
+
+
+Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Rx::clone() const
+{
+    return autoPtr<joint>(new Rx(*this));
+}
+
+
+void Foam::RBD::joints::Rx::write(Ostream& os) const
+{
+    joint::write(os);
+}

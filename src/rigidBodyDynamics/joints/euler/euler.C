@@ -1,0 +1,64 @@
+#include "euler.H"
+
+namespace
+{
+    // Coordinate rotation about axis a (0 x, 1 y, 2 z) by angle q
+    inline Foam::tensor Raxis(const Foam::label a, const Foam::scalar q)
+    {
+        if (a == 0)
+        {
+            return Foam::Rx(q);
+        }
+        else if (a == 1)
+        {
+            return Foam::Ry(q);
+        }
+        return Foam::Rz(q);
+    }
+
+    inline Foam::vector unitAxis(const Foam::label a)
+    {
+        Foam::vector e(Foam::Zero);
+        e[a] = 1;
+        return e;
+    }
+}
+
+
+Foam::RBD::joints::euler::euler(const label a0, const label a1, const label a2)
+:
+    joint(3),
+    axes_({a0, a1, a2})
+{}
+
+
+void Foam::RBD::joints::euler::jcalc
+(
+    XSvc& J,
+    const scalarField& q,
+    const scalarField& qDot
+) const
+{
+    const label i = qIndex_;
+
+    const tensor E1(Raxis(axes_[0], q[i]));
+    const tensor E2(Raxis(axes_[1], q[i + 1]));
+    const tensor E3(Raxis(axes_[2], q[i + 2]));
+    const tensor E32(E3 & E2);
+
+    const vector s1(E32 & unitAxis(axes_[0]));
+    const vector s2(E3 & unitAxis(axes_[1]));
+    const vector s3(unitAxis(axes_[2]));
+
+    J.X = spatialTransform(E32 & E1, Zero);
+    J.S[0] = spatialVector(s1, Zero);
+    J.S[1] = spatialVector(s2, Zero);
+    J.S[2] = spatialVector(s3, Zero);
+
+    const vector u1(qDot[i]*s1);
+    const vector u2(qDot[i + 1]*s2);
+    const vector u3(qDot[i + 2]*s3);
+
+    J.v = spatialVector(u1 + u2 + u3, Zero);
+    J.c = spatialVector((u1 ^ (u2 + u3)) + (u2 ^ u3), Zero);
+}

@@ -1,0 +1,46 @@
+#include "floatingJoint.H"
+#include "Pxyz.H"
+#include "Rs.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace joints
+{
+    defineTypeNameAndDebug(floating, 0);
+    addToRunTimeSelectionTable(joint, floating, dictionary);
+}
+}
+}
+
+
+namespace
+{
+    Foam::PtrList<Foam::RBD::joint> PxyzRs()
+    {
+        Foam::PtrList<Foam::RBD::joint> joints(2);
+        joints.set(0, new Foam::RBD::joints::Pxyz());
+        joints.set(1, new Foam::RBD::joints::Rs());
+        return joints;
+    }
+}
+
+
+Foam::RBD::joints::floating::floating(const dictionary&)
+:
+    composite(PxyzRs())
+{}
+
+
+Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::floating::clone() const
+{
+    return autoPtr<joint>(new floating(*this));
+}
+
+
+void Foam::RBD::joints::floating::write(Ostream& os) const
+{
+    joint::write(os);
+}

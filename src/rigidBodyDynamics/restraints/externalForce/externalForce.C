@@ -1,0 +1,70 @@
+#include "externalForce.H"
+#include "rigidBodyModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(externalForce, 0);
+    addToRunTimeSelectionTable(restraint, externalForce, dictionary);
+}
+}
+}
+
+
+Foam::RBD::restraints::externalForce::externalForce
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model)
+{
+    read(dict);
+}
+
+
+Foam::RBD::restraints::externalForce::externalForce(const externalForce& ef)
+:
+    restraint(ef),
+    location_(ef.location_),
+    force_(ef.force_->clone().ptr())
+{}
+
+
+void Foam::RBD::restraints::externalForce::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    addForce
+    (
+        fx,
+        model_.globalPoint(bodyID_, location_, ws),
+        force_->value(state.t())
+    );
+}
+
+
+bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
+{
+    restraint::read(dict);
+    location_ = dict.get<vector>("location");
+    force_ = Function1<vector>::New("force", dict);
+    return true;
+}
+
+
+void Foam::RBD::restraints::externalForce::write(Ostream& os) const
+{
+    restraint::write(os);
+    os.writeEntry("location", location_);
+    force_->writeData(os);
+}

@@ -1,0 +1,90 @@
+#include "linearAxialAngularSpring.H"
+#include "rigidBodyModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(linearAxialAngularSpring, 0);
+    addToRunTimeSelectionTable(restraint, linearAxialAngularSpring, dictionary);
+}
+}
+}
+
+
+Foam::RBD::restraints::linearAxialAngularSpring::linearAxialAngularSpring
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model)
+{
+    read(dict);
+}
+
+
+void Foam::RBD::restraints::linearAxialAngularSpring::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    // Rotation taking the body from its reference orientation to now
+    const tensor R(model_.X0(bodyID_, ws).E().T() & refQ_);
+
+    // Angle turned about the axis: that of the turned normal vector
+    const vector turned(R & perp_);
+    const scalar theta =
+        atan2(axis_ & (perp_ ^ turned), perp_ & turned);
+
+    const scalar omega = axis_ & model_.v(bodyID_, Zero, ws).w();
+
+    addMoment(fx, -(stiffness_*theta + damping_*omega)*axis_);
+}
+
+
+bool Foam::RBD::restraints::linearAxialAngularSpring::read
+(
+    const dictionary& dict
+)
+{
+    restraint::read(dict);
+
+    refQ_ = dict.getOrDefault<tensor>("referenceOrientation", tensor::I);
+    if (mag((refQ_ & refQ_.T()) - tensor::I) > 1e-6 || det(refQ_) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry referenceOrientation " << refQ_
+            << " is not a rotation tensor" << nl
+            << exit(FatalIOError);
+    }
+
+    axis_ = readAxis(dict, "axis");
+
+    // Any unit vector normal to the axis
+    const vector trial(mag(axis_.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0));
+    perp_ = trial - (trial & axis_)*axis_;
+    perp_ /= mag(perp_);
+
+    stiffness_ = readPositive(dict, "stiffness", true);
+    damping_ = readPositive(dict, "damping", true);
+
+    return true;
+}
+
+
+void Foam::RBD::restraints::linearAxialAngularSpring::write(Ostream& os) const
+{
+    restraint::write(os);
+    os.writeEntry("referenceOrientation", refQ_);
+    os.writeEntry("axis", axis_);
+    os.writeEntry("stiffness", stiffness_);
+    os.writeEntry("damping", damping_);
+}

@@ -1,0 +1,60 @@
+#include "linearDamper.H"
+#include "rigidBodyModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(linearDamper, 0);
+    addToRunTimeSelectionTable(restraint, linearDamper, dictionary);
+}
+}
+}
+
+
+Foam::RBD::restraints::linearDamper::linearDamper
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model)
+{
+    read(dict);
+}
+
+
+void Foam::RBD::restraints::linearDamper::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    addForce
+    (
+        fx,
+        model_.globalPoint(bodyID_, Zero, ws),
+        -coeff_*model_.v(bodyID_, Zero, ws).l()
+    );
+}
+
+
+bool Foam::RBD::restraints::linearDamper::read(const dictionary& dict)
+{
+    restraint::read(dict);
+    coeff_ = readPositive(dict, "coeff", true);
+    return true;
+}
+
+
+void Foam::RBD::restraints::linearDamper::write(Ostream& os) const
+{
+    restraint::write(os);
+    os.writeEntry("coeff", coeff_);
+}

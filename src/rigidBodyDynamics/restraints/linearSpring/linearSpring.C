@@ -1,0 +1,77 @@
+#include "linearSpring.H"
+#include "rigidBodyModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(linearSpring, 0);
+    addToRunTimeSelectionTable(restraint, linearSpring, dictionary);
+}
+}
+}
+
+
+Foam::RBD::restraints::linearSpring::linearSpring
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model)
+{
+    read(dict);
+}
+
+
+void Foam::RBD::restraints::linearSpring::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    const vector r(p - anchor_);
+    const scalar L = mag(r);
+
+    if (L < VSMALL)
+    {
+        return;
+    }
+
+    const vector dir(r/L);
+    const scalar LDot = dir & model_.v(bodyID_, refAttachmentPt_, ws).l();
+
+    addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
+}
+
+
+bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
+{
+    restraint::read(dict);
+
+    anchor_ = dict.get<vector>("anchor");
+    refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
+    stiffness_ = readPositive(dict, "stiffness", true);
+    damping_ = readPositive(dict, "damping", true);
+    restLength_ = readPositive(dict, "restLength", true);
+
+    return true;
+}
+
+
+void Foam::RBD::restraints::linearSpring::write(Ostream& os) const
+{
+    restraint::write(os);
+    os.writeEntry("anchor", anchor_);
+    os.writeEntry("refAttachmentPt", refAttachmentPt_);
+    os.writeEntry("stiffness", stiffness_);
+    os.writeEntry("damping", damping_);
+    os.writeEntry("restLength", restLength_);
+}

@@ -1,0 +1,95 @@
+#include "rigidBodyRestraint.H"
+#include "rigidBodyModel.H"
+
+namespace Foam
+{
+namespace RBD
+{
+    defineTypeNameAndDebug(restraint, 0);
+    defineRunTimeSelectionTable(restraint, dictionary);
+}
+}
+
+
+Foam::RBD::restraint::restraint
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    name_(name),
+    coeffs_(dict),
+    model_(model),
+    bodyID_(model.bodyID(dict, "body")),
+    masterID_(model.masterID(bodyID_))
+{
+    if (masterID_ == 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Restraint " << name << " acts on body "
+            << dict.get<word>("body") << ", which is fixed to the root"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+Foam::autoPtr<Foam::RBD::restraint> Foam::RBD::restraint::New
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+{
+    const word restraintType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(restraintType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "restraint",
+            restraintType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return cstrIter()(name, dict, model);
+}
+
+
+bool Foam::RBD::restraint::read(const dictionary& dict)
+{
+    coeffs_ = dict;
+    return true;
+}
+
+
+void Foam::RBD::restraint::write(Ostream& os) const
+{
+    os.writeEntry("type", type());
+    os.writeEntry("body", model_.name(bodyID_));
+}
+
+
+void Foam::RBD::restraint::addForce
+(
+    Field<spatialVector>& fx,
+    const vector& p,
+    const vector& F
+) const
+{
+    fx[masterID_] += spatialVector(p ^ F, F);
+}
+
+
+void Foam::RBD::restraint::addMoment
+(
+    Field<spatialVector>& fx,
+    const vector& M
+) const
+{
+    fx[masterID_] += spatialVector(M, Zero);
+}

@@ -1,0 +1,190 @@
+#include "rigidBodyInertia.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyInertia::rigidBodyInertia()
+:
+    m_(0),
+    c_(Zero),
+    Ic_(Zero)
+{}
+
+
+Foam::RBD::rigidBodyInertia::rigidBodyInertia
+(
+    const scalar m,
+    const vector& c,
+    const symmTensor& Ic
+)
+:
+    m_(m),
+    c_(c),
+    Ic_(Ic)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tensor Foam::RBD::crossMatrix(const vector& v)
+{
+    return tensor
+    (
+        0,    -v.z(),  v.y(),
+        v.z(),  0,    -v.x(),
+       -v.y(),  v.x(),  0
+    );
+}
+
+
+Foam::scalar Foam::RBD::readPositive
+(
+    const dictionary& dict,
+    const word& key,
+    const bool allowZero
+)
+{
+    const scalar v = dict.get<scalar>(key);
+
+    if (!std::isfinite(v) || v < 0 || (!allowZero && v == 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << ' ' << v << " in " << dict.dictName()
+            << " must be " << (allowZero ? "non-negative" : "positive") << nl
+            << exit(FatalIOError);
+    }
+
+    return v;
+}
+
+
+Foam::vector Foam::RBD::readAxis(const dictionary& dict, const word& key)
+{
+    const vector a(dict.get<vector>(key));
+    const scalar magA = mag(a);
+
+    if (!(magA > VSMALL) || !std::isfinite(magA))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << ' ' << a << " in " << dict.dictName()
+            << " must be a non-zero vector" << nl
+            << exit(FatalIOError);
+    }
+
+    return a/magA;
+}
+
+
+Foam::symmTensor Foam::RBD::rigidBodyInertia::Io() const
+{
+    // Parallel-axis theorem
+    return Ic_ + m_*(magSqr(c_)*symmTensor::I - sqr(c_));
+}
+
+
+Foam::spatialTensor Foam::RBD::rigidBodyInertia::spatial() const
+{
+    const tensor mcx(m_*crossMatrix(c_));
+
+    return spatialTensor
+    (
+        tensor(Io()), mcx,
+        -mcx,         m_*tensor::I
+    );
+}
+
+
+Foam::spatialVector Foam::RBD::rigidBodyInertia::operator&
+(
+    const spatialVector& v
+) const
+{
+    // Linear momentum of the centre of mass, then moment about the origin
+    const vector p(m_*(v.l() + (v.w() ^ c_)));
+
+    return spatialVector((Ic_ & v.w()) + (c_ ^ p), p);
+}
+
+
+Foam::scalar Foam::RBD::rigidBodyInertia::kineticEnergy
+(
+    const spatialVector& v
+) const
+{
+    return 0.5*(v && (*this & v));
+}
+
+
+void Foam::RBD::rigidBodyInertia::add
+(
+    const rigidBodyInertia& other,
+    const spatialTransform& X
+)
+{
+    // The other body's centre of mass and inertia in this body's frame
+    const vector c2((X.E().T() & other.c_) + X.r());
+    const symmTensor Ic2(transform(X.E().T(), other.Ic_));
+
+    const scalar m = m_ + other.m_;
+
+    if (m < VSMALL)
+    {
+        return;
+    }
+
+    const vector c((m_*c_ + other.m_*c2)/m);
+    const vector d1(c_ - c);
+    const vector d2(c2 - c);
+
+    Ic_ +=
+        m_*(magSqr(d1)*symmTensor::I - sqr(d1))
+      + Ic2 + other.m_*(magSqr(d2)*symmTensor::I - sqr(d2));
+    m_ = m;
+    c_ = c;
+}
+
+
+void Foam::RBD::rigidBodyInertia::check
+(
+    const dictionary& dict,
+    const bool massless
+) const
+{
+    if (massless)
+    {
+        return;
+    }
+
+    if (!(m_ > 0) || !std::isfinite(m_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << dict.dictName() << ": mass " << m_
+            << " must be positive" << nl
+            << exit(FatalIOError);
+    }
+
+    const vector ev(eigenValues(Ic_));
+
+    if (!(cmptMin(ev) > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << dict.dictName() << ": inertia " << Ic_
+            << " about the centre of mass is not positive definite"
+            << " (principal moments " << ev << ")" << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar tol = 1e-9*cmptMax(ev);
+    if
+    (
+        ev.x() + ev.y() < ev.z() - tol
+     || ev.y() + ev.z() < ev.x() - tol
+     || ev.z() + ev.x() < ev.y() - tol
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << dict.dictName() << ": principal moments " << ev
+            << " of inertia " << Ic_ << " break the triangle inequality"
+            << " (no real body has them)" << nl
+            << exit(FatalIOError);
+    }
+}

@@ -1,0 +1,550 @@
+#include "rigidBodyModel.H"
+#include "masslessBody.H"
+#include "jointBody.H"
+#include "compositeBody.H"
+#include "nullJoint.H"
+
+namespace Foam
+{
+namespace RBD
+{
+    defineTypeNameAndDebug(rigidBodyModel, 0);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::RBD::rigidBodyModel::addBody
+(
+    const label parentID,
+    const spatialTransform& XT,
+    autoPtr<joint> jointPtr,
+    autoPtr<rigidBody> bodyPtr
+)
+{
+    const label bodyID = bodies_.size();
+
+    jointPtr->setQIndex(nDoF_);
+    nDoF_ += jointPtr->nDoF();
+    unitQuaternions_ = unitQuaternions_ || jointPtr->unitQuaternion();
+
+    bodyIDs_.insert(bodyPtr->name(), bodyID);
+    I_.append(bodyPtr->spatial());
+    bodies_.append(bodyPtr.ptr());
+    joints_.append(jointPtr.ptr());
+    lambda_.append(parentID);
+    XT_.append(XT);
+
+    return bodyID;
+}
+
+
+void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
+{
+    dict.readIfPresent("g", g_);
+
+    const dictionary& bodiesDict = dict.subDict("bodies");
+
+    // Join or merge the bodies once their parent is known, so bodies may be
+    // listed in any order
+    DynamicList<word> pending(bodiesDict.toc());
+
+    while (pending.size())
+    {
+        DynamicList<word> waiting;
+
+        for (const word& name : pending)
+        {
+            const dictionary& bodyDict = bodiesDict.subDict(name);
+
+            if (found(name))
+            {
+                FatalIOErrorInFunction(bodyDict)
+                    << "Body " << name << " is defined twice" << nl
+                    << exit(FatalIOError);
+            }
+
+            const bool merged = bodyDict.found("mergeWith");
+            if (merged && bodyDict.found("parent"))
+            {
+                FatalIOErrorInFunction(bodyDict)
+                    << "Body " << name << " has both parent and mergeWith"
+                    << nl << exit(FatalIOError);
+            }
+
+            const word parentKey(merged ? "mergeWith" : "parent");
+            const word parentName(bodyDict.get<word>(parentKey));
+
+            if (!found(parentName))
+            {
+                waiting.append(name);
+                continue;
+            }
+
+            const spatialTransform XT
+            (
+                bodyDict.getOrDefault<spatialTransform>
+                (
+                    "transform",
+                    spatialTransform()
+                )
+            );
+
+            const tensor& E = XT.E();
+            if (mag((E & E.T()) - tensor::I) > 1e-6 || det(E) < 0)
+            {
+                FatalIOErrorInFunction(bodyDict)
+                    << "Entry transform of body " << name << ": " << E
+                    << " is not a rotation tensor" << nl
+                    << exit(FatalIOError);
+            }
+
+            autoPtr<rigidBody> body(rigidBody::New(name, bodyDict));
+
+            if (merged)
+            {
+                if (bodyDict.found("joint"))
+                {
+                    FatalIOErrorInFunction(bodyDict)
+                        << "Body " << name << " is merged with "
+                        << parentName << " and cannot have a joint" << nl
+                        << exit(FatalIOError);
+                }
+                merge(bodyID(parentName), XT, std::move(body));
+            }
+            else
+            {
+                join
+                (
+                    bodyID(parentName),
+                    XT,
+                    joint::New(bodyDict.subDict("joint")),
+                    std::move(body)
+                );
+            }
+        }
+
+        if (waiting.size() == pending.size())
+        {
+            const dictionary& bodyDict = bodiesDict.subDict(waiting[0]);
+            const word parentKey
+            (
+                bodyDict.found("mergeWith") ? "mergeWith" : "parent"
+            );
+
+            FatalIOErrorInFunction(bodyDict)
+                << "Body " << waiting[0] << ": " << parentKey << ' '
+                << bodyDict.get<word>(parentKey)
+                << " is not a body of the model" << nl
+                << "Bodies: " << bodyNames() << nl
+                << "(bodies waiting for a parent: " << waiting << ")" << nl
+                << exit(FatalIOError);
+        }
+
+        pending.transfer(waiting);
+    }
+
+    checkMasses(bodiesDict);
+
+    const dictionary* restraintsDict = dict.findDict("restraints");
+    if (restraintsDict)
+    {
+        for (const entry& e : *restraintsDict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*restraintsDict)
+                    << "Entry " << e.keyword() << " of restraints is not a"
+                    << " dictionary" << nl
+                    << exit(FatalIOError);
+            }
+            addRestraint(restraint::New(e.keyword(), e.dict(), *this));
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::checkMasses(const dictionary& dict) const
+{
+    // Mass of each subtree, leaves first
+    scalarField subtreeMass(nBodies(), Zero);
+    for (label i = nBodies() - 1; i > 0; --i)
+    {
+        subtreeMass[i] += bodies_[i].m();
+        subtreeMass[lambda_[i]] += subtreeMass[i];
+    }
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        if (joints_[i].nDoF() && !(subtreeMass[i] > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "The " << joints_[i].type() << " joint of body "
+                << bodies_[i].name() << " moves no mass: give the body,"
+                << " or one carried by it, a mass" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyModel::rigidBodyModel()
+:
+    nDoF_(0),
+    unitQuaternions_(false),
+    g_(Zero)
+{
+    addBody
+    (
+        -1,
+        spatialTransform(),
+        autoPtr<joint>(new joints::null()),
+        autoPtr<rigidBody>(new masslessBody("root"))
+    );
+}
+
+
+Foam::RBD::rigidBodyModel::rigidBodyModel(const dictionary& dict)
+:
+    rigidBodyModel()
+{
+    readModel(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::RBD::rigidBodyModel::join
+(
+    const label parentID,
+    const spatialTransform& XT,
+    autoPtr<joint> jointPtr,
+    autoPtr<rigidBody> bodyPtr
+)
+{
+    // Joining to a merged body joins to the body that carries it
+    label parent = parentID;
+    spatialTransform X(XT);
+    if (isMerged(parentID))
+    {
+        X = XT & mergedBody(parentID).masterXT();
+        parent = mergedBody(parentID).masterID();
+    }
+
+    PtrList<joint> chain;
+    jointPtr->expand(chain);
+
+    const word& name = bodyPtr->name();
+
+    for (label k = 0; k < chain.size() - 1; ++k)
+    {
+        parent = addBody
+        (
+            parent,
+            X,
+            autoPtr<joint>(chain.set(k, nullptr)),
+            autoPtr<rigidBody>
+            (
+                new jointBody(name + "_joint" + Foam::name(k))
+            )
+        );
+        X = spatialTransform();
+    }
+
+    return addBody
+    (
+        parent,
+        X,
+        autoPtr<joint>(chain.set(chain.size() - 1, nullptr)),
+        std::move(bodyPtr)
+    );
+}
+
+
+Foam::label Foam::RBD::rigidBodyModel::merge
+(
+    const label parentID,
+    const spatialTransform& XT,
+    autoPtr<rigidBody> bodyPtr
+)
+{
+    label master = parentID;
+    spatialTransform X(XT);
+    if (isMerged(parentID))
+    {
+        X = XT & mergedBody(parentID).masterXT();
+        master = mergedBody(parentID).masterID();
+    }
+
+    // Replace the master by a composite body holding the body as read
+    if (!isA<compositeBody>(bodies_[master]))
+    {
+        autoPtr<rigidBody> original(bodies_.set(master, nullptr));
+        bodies_.set(master, new compositeBody(std::move(original)));
+    }
+
+    rigidBodyInertia I(bodies_[master]);
+    I.add(*bodyPtr, X);
+    bodies_[master].setInertia(I);
+    I_[master] = I.spatial();
+
+    const label id = mergedBodyOffset + mergedBodies_.size();
+    bodyIDs_.insert(bodyPtr->name(), id);
+    mergedBodies_.append
+    (
+        new subBody(std::move(bodyPtr), bodies_[master].name(), master, X)
+    );
+
+    return id;
+}
+
+
+void Foam::RBD::rigidBodyModel::addRestraint(autoPtr<restraint> restraintPtr)
+{
+    restraints_.append(restraintPtr.ptr());
+}
+
+
+Foam::label Foam::RBD::rigidBodyModel::bodyID(const word& name) const
+{
+    const auto iter = bodyIDs_.cfind(name);
+
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "No body " << name << " in the model" << nl
+            << "Bodies: " << bodyNames() << nl
+            << exit(FatalError);
+    }
+
+    return *iter;
+}
+
+
+Foam::label Foam::RBD::rigidBodyModel::bodyID
+(
+    const dictionary& dict,
+    const word& key
+) const
+{
+    const word name(dict.get<word>(key));
+    const auto iter = bodyIDs_.cfind(name);
+
+    if (!iter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << ' ' << name << " in " << dict.dictName()
+            << ": no such body" << nl
+            << "Bodies: " << bodyNames() << nl
+            << exit(FatalIOError);
+    }
+
+    return *iter;
+}
+
+
+Foam::wordList Foam::RBD::rigidBodyModel::bodyNames() const
+{
+    DynamicList<word> names;
+    forAll(bodies_, i)
+    {
+        if (!isA<jointBody>(bodies_[i]))
+        {
+            names.append(bodies_[i].name());
+        }
+    }
+    forAll(mergedBodies_, i)
+    {
+        names.append(mergedBodies_[i].name());
+    }
+    return wordList(std::move(names));
+}
+
+
+const Foam::word& Foam::RBD::rigidBodyModel::name(const label bodyID) const
+{
+    return isMerged(bodyID) ? mergedBody(bodyID).name() : bodies_[bodyID].name();
+}
+
+
+const Foam::RBD::rigidBodyInertia& Foam::RBD::rigidBodyModel::inertia
+(
+    const label bodyID
+) const
+{
+    return
+        isMerged(bodyID)
+      ? static_cast<const rigidBodyInertia&>(mergedBody(bodyID).body())
+      : static_cast<const rigidBodyInertia&>(bodies_[bodyID]);
+}
+
+
+Foam::spatialTransform Foam::RBD::rigidBodyModel::X0
+(
+    const label bodyID,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    if (isMerged(bodyID))
+    {
+        const subBody& sb = mergedBody(bodyID);
+        return sb.masterXT() & ws.X0[sb.masterID()];
+    }
+    return ws.X0[bodyID];
+}
+
+
+Foam::spatialVector Foam::RBD::rigidBodyModel::v
+(
+    const label bodyID,
+    const vector& p,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    // The point in the master's frame
+    const label master = masterID(bodyID);
+    vector pm(p);
+    if (isMerged(bodyID))
+    {
+        const spatialTransform& X = mergedBody(bodyID).masterXT();
+        pm = (X.E().T() & p) + X.r();
+    }
+
+    const spatialVector& vb = ws.v[master];
+    const tensor ET(ws.X0[master].E().T());
+
+    return spatialVector(ET & vb.w(), ET & (vb.l() + (vb.w() ^ pm)));
+}
+
+
+Foam::vector Foam::RBD::rigidBodyModel::globalPoint
+(
+    const label bodyID,
+    const vector& p,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const spatialTransform X(X0(bodyID, ws));
+    return (X.E().T() & p) + X.r();
+}
+
+
+void Foam::RBD::rigidBodyModel::applyRestraints
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws,
+    scalarField& tau,
+    Field<spatialVector>& fx
+) const
+{
+    forAll(restraints_, ri)
+    {
+        restraints_[ri].restrain(tau, fx, state, ws);
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::integrate
+(
+    scalarField& q,
+    const scalarField& q0,
+    const scalarField& dq
+) const
+{
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        joints_[i].integrate(q, q0, dq);
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::checkState
+(
+    const scalarField& q,
+    const dictionary& dict
+) const
+{
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        joints_[i].checkState(q, dict);
+    }
+}
+
+
+Foam::scalar Foam::RBD::rigidBodyModel::kineticEnergy
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    scalar T = 0;
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        T += bodies_[i].kineticEnergy(ws.v[i]);
+    }
+    return T;
+}
+
+
+Foam::scalar Foam::RBD::rigidBodyModel::potentialEnergy
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    scalar V = 0;
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        V -= bodies_[i].m()*(g_ & globalPoint(i, bodies_[i].c(), ws));
+    }
+    return V;
+}
+
+
+void Foam::RBD::rigidBodyModel::write(Ostream& os) const
+{
+    os.writeEntry("g", g_);
+
+    os.beginBlock("bodies");
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        if (isA<jointBody>(bodies_[i]))
+        {
+            continue;
+        }
+        os.beginBlock(bodies_[i].name());
+        bodies_[i].write(os);
+        os.writeEntry("parent", bodies_[lambda_[i]].name());
+        os.writeEntry("transform", XT_[i]);
+        os.beginBlock("joint");
+        joints_[i].write(os);
+        os.endBlock();
+        os.endBlock();
+    }
+
+    forAll(mergedBodies_, i)
+    {
+        const subBody& sb = mergedBodies_[i];
+        os.beginBlock(sb.name());
+        sb.body().write(os);
+        os.writeEntry("mergeWith", sb.masterName());
+        os.writeEntry("transform", sb.masterXT());
+        os.endBlock();
+    }
+
+    os.endBlock();
+
+    if (restraints_.size())
+    {
+        os.beginBlock("restraints");
+        forAll(restraints_, ri)
+        {
+            os.beginBlock(restraints_[ri].name());
+            restraints_[ri].write(os);
+            os.endBlock();
+        }
+        os.endBlock();
+    }
+}

@@ -1,0 +1,139 @@
+#include "rigidBodyModelState.H"
+#include "rigidBodyModel.H"
+#include "IOstreams.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyModelState::readField
+(
+    const dictionary& dict,
+    const word& key,
+    const label nDoF,
+    scalarField& f
+)
+{
+    scalarField values;
+    if (!dict.readIfPresent(key, values))
+    {
+        return;
+    }
+
+    if (values.size() != nDoF)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " has " << values.size()
+            << " values; the model has " << nDoF << " degrees of freedom"
+            << nl << exit(FatalIOError);
+    }
+
+    forAll(values, i)
+    {
+        if (!std::isfinite(values[i]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry " << key << " holds " << values[i]
+                << " at index " << i << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    f = values;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyModelState::rigidBodyModelState
+(
+    const rigidBodyModel& model
+)
+:
+    q_(model.nDoF(), Zero),
+    qDot_(model.nDoF(), Zero),
+    qDdot_(model.nDoF(), Zero),
+    t_(0),
+    deltaT_(0),
+    qDdotValid_(false)
+{}
+
+
+Foam::RBD::rigidBodyModelState::rigidBodyModelState
+(
+    const rigidBodyModel& model,
+    const dictionary& dict
+)
+:
+    rigidBodyModelState(model)
+{
+    read(model, dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyModelState::read
+(
+    const rigidBodyModel& model,
+    const dictionary& dict
+)
+{
+    const label nDoF = model.nDoF();
+
+    readField(dict, "q", nDoF, q_);
+    readField(dict, "qDot", nDoF, qDot_);
+    if (dict.found("qDdot"))
+    {
+        readField(dict, "qDdot", nDoF, qDdot_);
+        qDdotValid_ = true;
+    }
+    dict.readIfPresent("t", t_);
+    dict.readIfPresent("deltaT", deltaT_);
+
+    model.checkState(q_, dict);
+}
+
+
+void Foam::RBD::rigidBodyModelState::write(dictionary& dict) const
+{
+    dict.add("q", q_, true);
+    dict.add("qDot", qDot_, true);
+    dict.add("qDdot", qDdot_, true);
+    dict.add("t", t_, true);
+    dict.add("deltaT", deltaT_, true);
+}
+
+
+void Foam::RBD::rigidBodyModelState::write(Ostream& os) const
+{
+    const unsigned int precision = os.precision(17);
+
+    os.writeEntry("q", q_);
+    os.writeEntry("qDot", qDot_);
+    os.writeEntry("qDdot", qDdot_);
+    os.writeEntry("t", t_);
+    os.writeEntry("deltaT", deltaT_);
+
+    os.precision(precision);
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+Foam::Istream& Foam::RBD::operator>>(Istream& is, rigidBodyModelState& s)
+{
+    is  >> s.q_ >> s.qDot_ >> s.qDdot_ >> s.t_ >> s.deltaT_;
+    s.qDdotValid_ = true;
+
+    is.check(FUNCTION_NAME);
+    return is;
+}
+
+
+Foam::Ostream& Foam::RBD::operator<<(Ostream& os, const rigidBodyModelState& s)
+{
+    os  << s.q_ << token::SPACE << s.qDot_ << token::SPACE << s.qDdot_
+        << token::SPACE << s.t_ << token::SPACE << s.deltaT_;
+
+    os.check(FUNCTION_NAME);
+    return os;
+}

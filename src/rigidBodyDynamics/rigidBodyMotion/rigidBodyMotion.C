@@ -1,0 +1,223 @@
+#include "rigidBodyMotion.H"
+#include "rigidBodySolver.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
+{
+    aRelax_ = dict.getOrDefault<scalar>("accelerationRelaxation", 1);
+    aDamp_ = dict.getOrDefault<scalar>("accelerationDamping", 1);
+    nIter_ = dict.getOrDefault<label>("nIter", 1);
+    report_ = dict.getOrDefault<Switch>("report", false);
+
+    if (!(aRelax_ > 0 && aRelax_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry accelerationRelaxation " << aRelax_
+            << " must be in (0, 1]" << nl << exit(FatalIOError);
+    }
+    if (!(aDamp_ > 0 && aDamp_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry accelerationDamping " << aDamp_
+            << " must be in (0, 1]" << nl << exit(FatalIOError);
+    }
+    if (nIter_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry nIter " << nIter_ << " must be at least 1" << nl
+            << exit(FatalIOError);
+    }
+
+    solver_ = rigidBodySolver::New(*this, dict.subDict("solver"));
+}
+
+
+void Foam::RBD::rigidBodyMotion::accelerations
+(
+    rigidBodyModelState& state,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    kinematics(state, ws_);
+    wsValid_ = (&state == &motionState_);
+
+    forAll(rtau_, i)
+    {
+        rtau_[i] = tau[i];
+    }
+    forAll(rfx_, i)
+    {
+        rfx_[i] = fx[i];
+    }
+    applyRestraints(state, ws_, rtau_, rfx_);
+
+    articulatedBodyDynamics(rtau_, rfx_, ws_, state.qDdot());
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyMotion::rigidBodyMotion(const dictionary& dict)
+:
+    rigidBodyModel(dict),
+    motionState_(*this, dict),
+    motionState0_(motionState_),
+    ws_(*this),
+    wsValid_(false),
+    aRelax_(1),
+    aDamp_(1),
+    nIter_(1),
+    report_(false),
+    iteration_(0),
+    rtau_(nDoF(), Zero),
+    rfx_(nBodies(), Zero),
+    qDdotPrev_(nDoF(), Zero)
+{
+    readCoeffs(dict);
+}
+
+
+Foam::RBD::rigidBodyMotion::rigidBodyMotion
+(
+    const dictionary& dict,
+    const dictionary& stateDict
+)
+:
+    rigidBodyMotion(dict)
+{
+    motionState_.read(*this, stateDict);
+    motionState0_ = motionState_;
+}
+
+
+Foam::RBD::rigidBodyMotion::~rigidBodyMotion()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::RBD::rigidBodyModelWorkspace&
+Foam::RBD::rigidBodyMotion::workspace()
+{
+    if (!wsValid_)
+    {
+        kinematics(motionState_, ws_);
+        wsValid_ = true;
+    }
+    return ws_;
+}
+
+
+void Foam::RBD::rigidBodyMotion::newTime()
+{
+    motionState0_ = motionState_;
+    iteration_ = 0;
+}
+
+
+void Foam::RBD::rigidBodyMotion::forwardDynamics
+(
+    rigidBodyModelState& state,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    qDdotPrev_ = state.qDdot();
+
+    accelerations(state, tau, fx);
+
+    scalarField& qDdot = state.qDdot();
+    forAll(qDdot, i)
+    {
+        qDdot[i] =
+            aDamp_*(aRelax_*qDdot[i] + (1 - aRelax_)*qDdotPrev_[i]);
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::initialAcceleration
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    if (!motionState0_.qDdotValid())
+    {
+        accelerations(motionState0_, tau, fx);
+        motionState0_.setQDdotValid(true);
+        motionState_.qDdot() = motionState0_.qDdot();
+        motionState_.setQDdotValid(true);
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::solve
+(
+    const scalar t,
+    const scalar deltaT,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    initialAcceleration(tau, fx);
+
+    motionState_.t() = t;
+    motionState_.deltaT() = deltaT;
+
+    solver_->solve(tau, fx);
+    ++iteration_;
+
+    // The solver's last evaluation was at an intermediate state
+    wsValid_ = false;
+}
+
+
+Foam::spatialTransform Foam::RBD::rigidBodyMotion::X0(const label bodyID)
+{
+    return rigidBodyModel::X0(bodyID, workspace());
+}
+
+
+Foam::spatialVector Foam::RBD::rigidBodyMotion::v
+(
+    const label bodyID,
+    const vector& p
+)
+{
+    return rigidBodyModel::v(bodyID, p, workspace());
+}
+
+
+void Foam::RBD::rigidBodyMotion::status(const label bodyID)
+{
+    const spatialTransform CofR(X0(bodyID));
+    const spatialVector vCofR(v(bodyID, Zero));
+
+    Info<< "Rigid-body motion of the " << name(bodyID) << nl
+        << "    Centre of rotation: " << CofR.r() << nl
+        << "    Orientation: " << CofR.E() << nl
+        << "    Linear velocity: " << vCofR.l() << nl
+        << "    Angular velocity: " << vCofR.w()
+        << endl;
+}
+
+
+bool Foam::RBD::rigidBodyMotion::read(const dictionary& dict)
+{
+    readCoeffs(dict);
+    return true;
+}
+
+
+void Foam::RBD::rigidBodyMotion::write(Ostream& os) const
+{
+    rigidBodyModel::write(os);
+
+    os.writeEntry("accelerationRelaxation", aRelax_);
+    os.writeEntry("accelerationDamping", aDamp_);
+    os.writeEntry("nIter", nIter_);
+    os.writeEntry("report", report_);
+    motionState_.write(os);
+}

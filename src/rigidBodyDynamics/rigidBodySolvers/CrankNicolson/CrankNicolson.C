@@ -1,0 +1,68 @@
+#include "CrankNicolson.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace rigidBodySolvers
+{
+    defineTypeNameAndDebug(CrankNicolson, 0);
+    addToRunTimeSelectionTable(rigidBodySolver, CrankNicolson, dictionary);
+}
+}
+}
+
+
+Foam::RBD::rigidBodySolvers::CrankNicolson::CrankNicolson
+(
+    rigidBodyMotion& body,
+    const dictionary& dict
+)
+:
+    rigidBodySolver(body),
+    aoc_(dict.getOrDefault<scalar>("aoc", 0.5)),
+    voc_(dict.getOrDefault<scalar>("voc", 0.5))
+{
+    for (const scalar oc : {aoc_, voc_})
+    {
+        if (!(oc >= 0.5 && oc <= 1))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entries aoc " << aoc_ << " and voc " << voc_
+                << " of the CrankNicolson solver must be in [0.5, 1]"
+                << " (below 0.5 the scheme is unstable)" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodySolvers::CrankNicolson::update()
+{
+    const scalar dt = deltaT();
+    const scalarField& qDot0 = state0().qDot();
+    const scalarField& qDdot0 = state0().qDdot();
+    const scalarField& qDdot = state().qDdot();
+    scalarField& qDot = state().qDot();
+
+    forAll(qDot, i)
+    {
+        qDot[i] = qDot0[i] + dt*((1 - aoc_)*qDdot0[i] + aoc_*qDdot[i]);
+        dq_[i] = dt*((1 - voc_)*qDot0[i] + voc_*qDot[i]);
+    }
+
+    integratePosition();
+}
+
+
+void Foam::RBD::rigidBodySolvers::CrankNicolson::solve
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    update();
+    forwardDynamics(tau, fx);
+    update();
+}

@@ -1,0 +1,80 @@
+#include "Newmark.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace rigidBodySolvers
+{
+    defineTypeNameAndDebug(Newmark, 0);
+    addToRunTimeSelectionTable(rigidBodySolver, Newmark, dictionary);
+}
+}
+}
+
+
+Foam::RBD::rigidBodySolvers::Newmark::Newmark
+(
+    rigidBodyMotion& body,
+    const dictionary& dict
+)
+:
+    rigidBodySolver(body),
+    gamma_(dict.getOrDefault<scalar>("gamma", 0.5)),
+    beta_(dict.getOrDefault<scalar>("beta", 0.25))
+{
+    if (!(gamma_ >= 0.5 && gamma_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry gamma " << gamma_ << " of the Newmark solver must be"
+            << " in [0.5, 1] (below 0.5 the scheme is unstable)" << nl
+            << exit(FatalIOError);
+    }
+    if (!(beta_ >= 0 && beta_ <= 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry beta " << beta_ << " of the Newmark solver must be"
+            << " in [0, 0.5]" << nl
+            << exit(FatalIOError);
+    }
+    if (beta_ < 0.25*sqr(gamma_ + 0.5) - SMALL)
+    {
+        WarningInFunction
+            << "Newmark beta " << beta_ << " is below (gamma + 1/2)^2/4 = "
+            << 0.25*sqr(gamma_ + 0.5) << ": the scheme is only"
+            << " conditionally stable.  beta is used as given." << endl;
+    }
+}
+
+
+void Foam::RBD::rigidBodySolvers::Newmark::update()
+{
+    const scalar dt = deltaT();
+    const scalarField& qDot0 = state0().qDot();
+    const scalarField& qDdot0 = state0().qDdot();
+    const scalarField& qDdot = state().qDdot();
+    scalarField& qDot = state().qDot();
+
+    forAll(qDot, i)
+    {
+        qDot[i] = qDot0[i] + dt*((1 - gamma_)*qDdot0[i] + gamma_*qDdot[i]);
+        dq_[i] =
+            dt*qDot0[i]
+          + sqr(dt)*((0.5 - beta_)*qDdot0[i] + beta_*qDdot[i]);
+    }
+
+    integratePosition();
+}
+
+
+void Foam::RBD::rigidBodySolvers::Newmark::solve
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    update();
+    forwardDynamics(tau, fx);
+    update();
+}
