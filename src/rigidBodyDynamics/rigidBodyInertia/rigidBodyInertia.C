@@ -162,29 +162,52 @@ void Foam::RBD::rigidBodyInertia::check
             << exit(FatalIOError);
     }
 
-    const vector ev(eigenValues(Ic_));
-
-    if (!(cmptMin(ev) > 0))
+    // Positive definite: leading principal minors positive (scaled by the
+    // trace, so the test does not depend on units)
+    const scalar trI = tr(Ic_);
+    if (!(trI > 0) || !std::isfinite(trI))
     {
         FatalIOErrorInFunction(dict)
             << "Body " << dict.dictName() << ": inertia " << Ic_
-            << " about the centre of mass is not positive definite"
-            << " (principal moments " << ev << ")" << nl
+            << " about the centre of mass is not positive definite" << nl
             << exit(FatalIOError);
     }
 
-    const scalar tol = 1e-9*cmptMax(ev);
+    const symmTensor I(Ic_/trI);
+    const scalar eps = 1e-10;
+
     if
     (
-        ev.x() + ev.y() < ev.z() - tol
-     || ev.y() + ev.z() < ev.x() - tol
-     || ev.z() + ev.x() < ev.y() - tol
+        !(
+            I.xx() > eps
+         && I.xx()*I.yy() - sqr(I.xy()) > eps
+         && det(I) > eps
+        )
     )
     {
         FatalIOErrorInFunction(dict)
-            << "Body " << dict.dictName() << ": principal moments " << ev
-            << " of inertia " << Ic_ << " break the triangle inequality"
-            << " (no real body has them)" << nl
+            << "Body " << dict.dictName() << ": inertia " << Ic_
+            << " about the centre of mass is not positive definite" << nl
+            << exit(FatalIOError);
+    }
+
+    // A real body's second moment J = tr(I)/2 - I is positive semi-definite
+    // (the principal moments meet the triangle inequality): all principal
+    // minors of J non-negative
+    const symmTensor J(0.5*symmTensor::I - I);
+    const bool semiDefinite =
+        J.xx() >= -eps && J.yy() >= -eps && J.zz() >= -eps
+     && J.xx()*J.yy() - sqr(J.xy()) >= -eps
+     && J.yy()*J.zz() - sqr(J.yz()) >= -eps
+     && J.xx()*J.zz() - sqr(J.xz()) >= -eps
+     && det(J) >= -eps;
+
+    if (!semiDefinite)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << dict.dictName() << ": inertia " << Ic_
+            << " about the centre of mass has principal moments that break"
+            << " the triangle inequality (no real body has them)" << nl
             << exit(FatalIOError);
     }
 }

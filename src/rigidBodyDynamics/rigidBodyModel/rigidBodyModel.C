@@ -3,6 +3,7 @@
 #include "jointBody.H"
 #include "compositeBody.H"
 #include "nullJoint.H"
+#include "quaternion.H"
 
 namespace Foam
 {
@@ -82,7 +83,7 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
                 continue;
             }
 
-            const spatialTransform XT
+            spatialTransform XT
             (
                 bodyDict.getOrDefault<spatialTransform>
                 (
@@ -90,15 +91,7 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
                     spatialTransform()
                 )
             );
-
-            const tensor& E = XT.E();
-            if (mag((E & E.T()) - tensor::I) > 1e-6 || det(E) < 0)
-            {
-                FatalIOErrorInFunction(bodyDict)
-                    << "Entry transform of body " << name << ": " << E
-                    << " is not a rotation tensor" << nl
-                    << exit(FatalIOError);
-            }
+            XT.E() = checkRotation(bodyDict, "transform", XT.E());
 
             autoPtr<rigidBody> body(rigidBody::New(name, bodyDict));
 
@@ -186,6 +179,45 @@ void Foam::RBD::rigidBodyModel::checkMasses(const dictionary& dict) const
                 << exit(FatalIOError);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+Foam::tensor Foam::RBD::checkRotation
+(
+    const dictionary& dict,
+    const word& key,
+    const tensor& E
+)
+{
+    const scalar err = mag((E & E.T()) - tensor::I);
+
+    if (!(err < 1e-3) || det(E) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " in " << dict.dictName() << ": " << E
+            << " is not a rotation tensor (|E E^T - I| = " << err
+            << ", det " << det(E) << ")" << nl
+            << exit(FatalIOError);
+    }
+
+    if (err > 1e-12)
+    {
+        // Nearest rotation, through the unit quaternion
+        const tensor R(normalize(quaternion(E.T())).R().T());
+
+        if (err > 1e-9)
+        {
+            IOWarningInFunction(dict)
+                << "Entry " << key << " in " << dict.dictName() << ": "
+                << E << " is a rotation only to " << err
+                << "; using the nearest rotation " << R << endl;
+        }
+        return R;
+    }
+
+    return E;
 }
 
 

@@ -57,14 +57,12 @@ bool Foam::RBD::restraints::linearAxialAngularSpring::read
 {
     restraint::read(dict);
 
-    refQ_ = dict.getOrDefault<tensor>("referenceOrientation", tensor::I);
-    if (mag((refQ_ & refQ_.T()) - tensor::I) > 1e-6 || det(refQ_) < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry referenceOrientation " << refQ_
-            << " is not a rotation tensor" << nl
-            << exit(FatalIOError);
-    }
+    refQ_ = checkRotation
+    (
+        dict,
+        "referenceOrientation",
+        dict.getOrDefault<tensor>("referenceOrientation", tensor::I)
+    );
 
     axis_ = readAxis(dict, "axis");
 

@@ -1,0 +1,396 @@
+/*---------------------------------------------------------------------------*\
+Application
+    Test-physics
+
+Description
+    Exact answers: free fall, the damped spring-mass, the pendulum period
+    (small and large angle, by the complete elliptic integral), the
+    torque-free symmetric top, the intermediate-axis flip with energy and
+    angular momentum conserved, spin through many turns on a quaternion
+    joint; each solver's order of convergence.  Tolerances are stated with
+    each check.
+
+\*---------------------------------------------------------------------------*/
+
+#include "testCheck.H"
+#include "testModels.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam;
+
+namespace physicsTest
+{
+
+using Foam::sqrt;
+using Foam::exp;
+using Foam::sin;
+using Foam::cos;
+using test::check;
+using test::checkAbs;
+using test::checkRel;
+using test::checkRange;
+
+const char* solvers[] = {"Newmark", "CrankNicolson", "symplectic"};
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+std::string header(const std::string& solver, const std::string& g = "(0 0 0)")
+{
+    return
+        "solver { type " + solver + "; } g " + g + "; ";
+}
+
+
+void freeFall()
+{
+    for (const char* solver : solvers)
+    {
+        autoPtr<RBD::rigidBodyMotion> m = test::motion
+        (
+            header(solver, "(0 0 -9.81)")
+          + "bodies { ball { type sphere; parent root; mass 2; radius 0.1;"
+            " centreOfMass (0 0 0); joint { type Pxyz; } } }"
+            " qDot (1 0 2);"
+        );
+
+        test::runTo(m(), 0.01, 1.0);
+        const scalarField& q = m->state().q();
+        const scalar t = m->state().t();
+
+        checkAbs
+        (
+            q[2], 2*t - 0.5*9.81*sqr(t), 1e-10,
+            std::string("free fall height, ") + solver
+        );
+        checkAbs(q[0], t, 1e-12, std::string("free fall drift, ") + solver);
+    }
+}
+
+
+//- Damped spring-mass on Pz: error at t = 1 s
+scalar springMassError
+(
+    const std::string& solver,
+    const scalar dt,
+    const label nIter
+)
+{
+    const scalar m = 2, k = 50, c = 1, x0 = 0.1;
+
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header(solver)
+      + "bodies { mass { type cuboid; parent root; mass 2; L (0.1 0.1 0.1);"
+        " centreOfMass (0 0 0); joint { type Pz; } } }"
+        " restraints { spring { type linearSpring; body mass;"
+        " anchor (0 0 -1); refAttachmentPt (0 0 0); stiffness 50;"
+        " damping 1; restLength 1; } }"
+        " q (0.1);"
+    );
+
+    test::runTo(motion(), dt, 1.0, nIter);
+
+    const scalar t = motion->state().t();
+    const scalar w0 = sqrt(k/m);
+    const scalar zeta = c/(2*sqrt(k*m));
+    const scalar wd = w0*sqrt(1 - sqr(zeta));
+    const scalar exact =
+        exp(-zeta*w0*t)
+       *(x0*cos(wd*t) + (zeta*w0*x0/wd)*sin(wd*t));
+
+    return mag(motion->state().q()[0] - exact);
+}
+
+
+void springMass()
+{
+    // Accuracy at dt = 1 ms
+    checkAbs
+    (
+        springMassError("Newmark", 1e-3, 1), 0, 5e-6,
+        "damped spring-mass at t = 1 s, Newmark, dt 1 ms"
+    );
+    checkAbs
+    (
+        springMassError("CrankNicolson", 1e-3, 1), 0, 5e-6,
+        "damped spring-mass at t = 1 s, CrankNicolson, dt 1 ms"
+    );
+
+    // Order of convergence: error ratio on halving dt
+    struct orderCase { const char* solver; label nIter; scalar lo, hi; };
+    const orderCase cases[] =
+    {
+        {"Newmark", 1, 3.6, 4.4},
+        {"CrankNicolson", 1, 3.6, 4.4},
+        {"Newmark", 3, 3.6, 4.4},
+        {"symplectic", 1, 1.8, 2.2},
+        {"symplectic", 4, 3.6, 4.4}
+    };
+
+    for (const orderCase& oc : cases)
+    {
+        const scalar e1 = springMassError(oc.solver, 4e-3, oc.nIter);
+        const scalar e2 = springMassError(oc.solver, 2e-3, oc.nIter);
+        const scalar e3 = springMassError(oc.solver, 1e-3, oc.nIter);
+
+        Info<< "    spring-mass errors " << oc.solver << " nIter "
+            << oc.nIter << ": " << e1 << ' ' << e2 << ' ' << e3 << endl;
+
+        checkRange
+        (
+            sqrt((e1/e2)*(e2/e3)), oc.lo, oc.hi,
+            std::string("error ratio on halving dt, damped spring-mass, ")
+          + oc.solver + " nIter " + std::to_string(oc.nIter)
+        );
+    }
+}
+
+
+//- Complete elliptic integral of the first kind K(k), by the AGM
+scalar ellipticK(const scalar k)
+{
+    scalar a = 1, b = sqrt(1 - sqr(k));
+    while (mag(a - b) > 1e-15*a)
+    {
+        const scalar an = 0.5*(a + b);
+        b = sqrt(a*b);
+        a = an;
+    }
+    return constant::mathematical::pi/(2*a);
+}
+
+
+void pendulum(const scalar theta0, const scalar tol)
+{
+    const scalar m = 1, r = 0.1, L = 1, g = 9.81;
+    const scalar Ipivot = 0.4*m*sqr(r) + m*sqr(L);
+    const scalar w0 = sqrt(m*g*L/Ipivot);
+    const scalar exactT = 4*ellipticK(sin(0.5*theta0))/w0;
+
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header("Newmark", "(0 0 -9.81)")
+      + "bodies { bob { type sphere; parent root; mass 1; radius 0.1;"
+        " centreOfMass (0 0 -1); joint { type Ry; } } }"
+        " q (" + std::to_string(theta0) + ");"
+    );
+
+    // Times at which q crosses zero
+    DynamicList<scalar> crossings;
+    scalar qPrev = theta0, tPrev = 0;
+
+    test::run
+    (
+        motion(), 1e-4, label(2.2*exactT/1e-4), 1,
+        [&](RBD::rigidBodyMotion& mo)
+        {
+            const scalar q = mo.state().q()[0];
+            const scalar t = mo.state().t();
+            if (q*qPrev < 0)
+            {
+                crossings.append(tPrev + (t - tPrev)*qPrev/(qPrev - q));
+            }
+            qPrev = q;
+            tPrev = t;
+        }
+    );
+
+    if
+    (
+        check
+        (
+            crossings.size() >= 3,
+            "pendulum swings through zero at least three times"
+        )
+    )
+    {
+        checkRel
+        (
+            crossings[2] - crossings[0], exactT, tol,
+            "pendulum period, amplitude " + std::to_string(theta0)
+          + " rad (elliptic integral), Newmark dt 0.1 ms"
+        );
+    }
+}
+
+
+void symmetricTop()
+{
+    // I = diag(1 1 2), omega = (1 0 2): the body-frame angular velocity
+    // precesses at (I3 - I1)/I1 omega3 = 2 rad/s: omega = (cos 2t, sin 2t, 2)
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header("Newmark")
+      + "bodies { top { type rigidBody; parent root; mass 1;"
+        " centreOfMass (0 0 0); inertia (1 0 0 1 0 2);"
+        " joint { type floating; } } }"
+        " qDot (0 0 0 1 0 2);"
+    );
+
+    test::runTo(motion(), 1e-3, 1.0);
+
+    const scalarField& qDot = motion->state().qDot();
+    const scalar t = motion->state().t();
+
+    checkAbs(qDot[3], cos(2*t), 1e-5, "symmetric top omega_x = cos 2t at 1 s");
+    checkAbs(qDot[4], sin(2*t), 1e-5, "symmetric top omega_y = sin 2t at 1 s");
+    checkAbs(qDot[5], 2, 1e-12, "symmetric top omega_z constant");
+}
+
+
+void intermediateAxis()
+{
+    // Spin about the intermediate axis flips; energy and angular momentum
+    // are conserved
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header("Newmark")
+      + "bodies { book { type rigidBody; parent root; mass 1;"
+        " centreOfMass (0 0 0); inertia (1 0 0 2 0 3);"
+        " joint { type floating; } } }"
+        " qDot (0 0 0 0.01 2 0.01);"
+    );
+
+    const label id = motion->bodyID("book");
+
+    auto momentum = [&](RBD::rigidBodyMotion& m)
+    {
+        const spatialTransform X(m.X0(id));
+        const spatialVector v(m.workspace().v[m.masterID(id)]);
+        return vector(X.E().T() & (m.bodies()[m.masterID(id)].Ic() & v.w()));
+    };
+
+    const vector L0(momentum(motion()));
+    const scalar T0 = motion->kineticEnergy(motion->workspace());
+
+    scalar minOmegaY = GREAT;
+    scalar maxLErr = 0, maxTErr = 0;
+
+    test::run
+    (
+        motion(), 1e-3, 20000, 1,
+        [&](RBD::rigidBodyMotion& m)
+        {
+            minOmegaY = min(minOmegaY, m.state().qDot()[4]);
+            maxLErr = max(maxLErr, mag(momentum(m) - L0)/mag(L0));
+            maxTErr =
+                max(maxTErr, mag(m.kineticEnergy(m.workspace()) - T0)/T0);
+        }
+    );
+
+    check
+    (
+        minOmegaY < -1.9,
+        "spin about the intermediate axis flips (min omega_y "
+      + std::to_string(minOmegaY) + " < -1.9)"
+    );
+    checkAbs
+    (
+        maxTErr, 0, 1e-6,
+        "intermediate-axis spin: kinetic energy conserved over 20 s"
+    );
+    checkAbs
+    (
+        maxLErr, 0, 1e-5,
+        "intermediate-axis spin: angular momentum conserved over 20 s"
+    );
+}
+
+
+void spinThroughPi()
+{
+    // Constant spin of 10 rad/s about z for 1 s on a floating joint: the
+    // quaternion passes pi three times; orientation = Rz(10)
+    for (const char* solver : solvers)
+    {
+        autoPtr<RBD::rigidBodyMotion> motion = test::motion
+        (
+            header(solver)
+          + "bodies { wheel { type rigidBody; parent root; mass 1;"
+            " centreOfMass (0 0 0); inertia (1 0 0 1 0 2);"
+            " joint { type floating; } } }"
+            " qDot (0 0 0 0 0 10);"
+        );
+
+        test::runTo(motion(), 1e-3, 1.0);
+
+        const tensor E(motion->X0(motion->bodyID("wheel")).E());
+        checkAbs
+        (
+            mag(E - Rz(10.0)), 0, 1e-9,
+            std::string("spin through pi on the Rs joint: orientation ")
+          + "Rz(10 rad) after 1 s, " + solver
+        );
+    }
+}
+
+
+void compositeVersusSimple()
+{
+    // composite (Px Py Pz) moves as Pxyz, composite (Rx Ry Rz) as Rxyz
+    const std::string body =
+        " parent root; mass 2; centreOfMass (0.1 0.2 -0.3);"
+        " inertia (0.3 0.01 0.02 0.4 0.03 0.5);";
+
+    const std::pair<std::string, std::string> pairs[] =
+    {
+        {"{ type Pxyz; }",
+         "{ type composite; joints ({ type Px; } { type Py; } { type Pz; }); }"},
+        {"{ type Rxyz; }",
+         "{ type composite; joints ({ type Rx; } { type Ry; } { type Rz; }); }"},
+        {"{ type Rzyx; }",
+         "{ type composite; joints ({ type Rz; } { type Ry; } { type Rx; }); }"},
+        {"{ type Ryxz; }",
+         "{ type composite; joints ({ type Ry; } { type Rx; } { type Rz; }); }"}
+    };
+
+    for (const auto& p : pairs)
+    {
+        autoPtr<RBD::rigidBodyMotion> a = test::motion
+        (
+            header("Newmark", "(0 0 -9.81)")
+          + "bodies { b { type rigidBody;" + body + " joint " + p.first
+          + " } } q (0.3 -0.2 0.1); qDot (1 -2 0.5);"
+        );
+        autoPtr<RBD::rigidBodyMotion> b = test::motion
+        (
+            header("Newmark", "(0 0 -9.81)")
+          + "bodies { b { type rigidBody;" + body + " joint " + p.second
+          + " } } q (0.3 -0.2 0.1); qDot (1 -2 0.5);"
+        );
+
+        test::runTo(a(), 1e-3, 0.5);
+        test::runTo(b(), 1e-3, 0.5);
+
+        const spatialTransform Xa(a->X0(a->bodyID("b")));
+        const spatialTransform Xb(b->X0(b->bodyID("b")));
+
+        checkAbs
+        (
+            mag(Xa.E() - Xb.E()) + mag(Xa.r() - Xb.r()), 0, 1e-10,
+            "composite " + p.second.substr(0, 60) + "... moves as "
+          + p.first
+        );
+    }
+}
+
+
+} // End namespace physicsTest
+
+
+int main(int argc, char *argv[])
+{
+    using namespace physicsTest;
+
+    freeFall();
+    springMass();
+    pendulum(0.1, 5e-6);
+    pendulum(2.5, 5e-6);
+    symmetricTop();
+    intermediateAxis();
+    spinThroughPi();
+    compositeVersusSimple();
+
+    return test::testResult();
+}
