@@ -224,7 +224,8 @@ void symmetricTop()
         header("Newmark")
       + "bodies { top { type rigidBody; parent root; mass 1;"
         " centreOfMass (0 0 0); inertia (1 0 0 1 0 2);"
-        " joint { type floating; } } }"
+        " joint { type composite;"
+        " joints ({ type Pxyz; } { type Rs; }); } } }"
         " qDot (0 0 0 1 0 2);"
     );
 
@@ -248,7 +249,8 @@ void intermediateAxis()
         header("Newmark")
       + "bodies { book { type rigidBody; parent root; mass 1;"
         " centreOfMass (0 0 0); inertia (1 0 0 2 0 3);"
-        " joint { type floating; } } }"
+        " joint { type composite;"
+        " joints ({ type Pxyz; } { type Rs; }); } } }"
         " qDot (0 0 0 0.01 2 0.01);"
     );
 
@@ -309,7 +311,8 @@ void spinThroughPi()
             header(solver)
           + "bodies { wheel { type rigidBody; parent root; mass 1;"
             " centreOfMass (0 0 0); inertia (1 0 0 1 0 2);"
-            " joint { type floating; } } }"
+            " joint { type composite;"
+        " joints ({ type Pxyz; } { type Rs; }); } } }"
             " qDot (0 0 0 0 0 10);"
         );
 

@@ -33,6 +33,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "uniformDimensionedFields.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "rigidBodyMotion.H"
@@ -107,10 +108,9 @@ vector readG(const Time& runTime, const dictionary& coeffs)
         false
     );
 
-    if (gIO.typeHeaderOk<IOdictionary>(false))
+    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
     {
-        const IOdictionary gDict(gIO);
-        g = gDict.get<vector>("value");
+        g = uniformDimensionedVectorField(gIO).value();
     }
 
     return g;
@@ -193,6 +193,10 @@ int main(int argc, char *argv[])
 
     RBD::rigidBodyMotion& motion = motionPtr();
     motion.setG(readG(runTime, coeffs));
+
+    Info<< "Model: " << motion.bodyNames().size() - 1 << " bodies, "
+        << motion.nDoF() << " degrees of freedom, g " << motion.g() << nl
+        << endl;
 
     const scalarField tau(motion.nDoF(), Zero);
     const Field<spatialVector> fx(motion.nBodies(), Zero);

@@ -1,6 +1,6 @@
 #include "floatingJoint.H"
 #include "Pxyz.H"
-#include "Rs.H"
+#include "Rzyx.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -18,11 +18,11 @@ namespace joints
 
 namespace
 {
-    Foam::PtrList<Foam::RBD::joint> PxyzRs()
+    Foam::PtrList<Foam::RBD::joint> PxyzRzyx()
     {
         Foam::PtrList<Foam::RBD::joint> joints(2);
         joints.set(0, new Foam::RBD::joints::Pxyz());
-        joints.set(1, new Foam::RBD::joints::Rs());
+        joints.set(1, new Foam::RBD::joints::Rzyx());
         return joints;
     }
 }
@@ -30,7 +30,7 @@ namespace
 
 Foam::RBD::joints::floating::floating(const dictionary&)
 :
-    composite(PxyzRs())
+    composite(PxyzRzyx())
 {}
 
 

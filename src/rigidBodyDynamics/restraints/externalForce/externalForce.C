@@ -41,15 +41,10 @@ void Foam::RBD::restraints::externalForce::restrain
     scalarField&,
     Field<spatialVector>& fx,
     const rigidBodyModelState& state,
-    const rigidBodyModelWorkspace& ws
+    const rigidBodyModelWorkspace&
 ) const
 {
-    addForce
-    (
-        fx,
-        model_.globalPoint(bodyID_, location_, ws),
-        force_->value(state.t())
-    );
+    addForce(fx, location_, force_->value(state.t()));
 }
 
 

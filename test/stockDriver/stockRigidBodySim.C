@@ -1,0 +1,230 @@
+/*---------------------------------------------------------------------------*\
+Application
+    stockRigidBodySim
+
+Group
+    grpRigidBodyDynamicsTests
+
+Description
+    Runs a rigid-body model from its dictionary with the STOCK OpenFOAM v1912
+    librigidBodyDynamics (/usr/lib), so that tests can compare the project's
+    own rigidBodySim against it, each in its own process.  It is built
+    against the stock headers and linked to the stock library only.
+
+    Same command line and output as rigidBodySim: the coefficients come from
+    the rigidBodyMotionCoeffs sub-dictionary of constant/dynamicMeshDict, or
+    else from the top level of constant/rigidBodyMotionDict; gravity is their
+    g entry, or else constant/g; system/controlDict gives deltaT and endTime.
+    Prints "Time = t" and the stock status block of every body named in
+    bodies, first for the initial state and then after every step.
+
+    Prints first "stock library: <path>", the real path of the shared object
+    that holds the stock model's code, found with dladdr(), so that a test
+    can prove which library was loaded; stops if that is the project's own.
+    Run it through runStock, which keeps the project's library directory off
+    LD_LIBRARY_PATH.
+
+Usage
+    test/stockDriver/runStock [-case DIR]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "uniformDimensionedFields.H"
+#include "rigidBodyMotion.H"
+
+#include <dlfcn.h>
+#include <climits>
+#include <cstdlib>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+//- The real path of a file, or the path itself if it cannot be resolved
+fileName resolved(const fileName& path)
+{
+    char buf[PATH_MAX];
+
+    if (::realpath(path.c_str(), buf))
+    {
+        return fileName(buf);
+    }
+
+    return path;
+}
+
+
+//- The shared object that holds the stock library's rigidBodyModel::typeName
+fileName stockLibrary()
+{
+    Dl_info info;
+    const void* addr = &RBD::rigidBodyModel::typeName;
+
+    if (!::dladdr(addr, &info) || !info.dli_fname)
+    {
+        FatalErrorInFunction
+            << "dladdr found no shared object holding "
+            << "Foam::RBD::rigidBodyModel::typeName" << nl
+            << exit(FatalError);
+    }
+
+    const fileName lib(resolved(info.dli_fname));
+
+    const fileName userLibBin(getEnv("FOAM_USER_LIBBIN"));
+    if (!userLibBin.empty() && lib.path() == resolved(userLibBin))
+    {
+        FatalErrorInFunction
+            << "Loaded " << lib << ", the project's library, not the stock"
+            << " one: run through test/stockDriver/runStock" << nl
+            << exit(FatalError);
+    }
+
+    return lib;
+}
+
+
+//- The rigid-body coefficients: rigidBodyMotionCoeffs of
+//  constant/dynamicMeshDict, or else the top level of
+//  constant/rigidBodyMotionDict
+dictionary readCoeffs(const Time& runTime)
+{
+    IOobject meshDictIO
+    (
+        "dynamicMeshDict",
+        runTime.constant(),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (meshDictIO.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary meshDict(meshDictIO);
+        return meshDict.subDict("rigidBodyMotionCoeffs");
+    }
+
+    IOobject motionDictIO
+    (
+        "rigidBodyMotionDict",
+        runTime.constant(),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (!motionDictIO.typeHeaderOk<IOdictionary>(true))
+    {
+        FatalErrorInFunction
+            << "Neither " << meshDictIO.objectPath() << " nor "
+            << motionDictIO.objectPath() << " exists" << nl
+            << exit(FatalError);
+    }
+
+    const IOdictionary motionDict(motionDictIO);
+    return dictionary(motionDict);
+}
+
+
+//- Gravity: the coefficients' g, or else constant/g, or else zero
+vector readG(const Time& runTime, const dictionary& coeffs)
+{
+    vector g(Zero);
+
+    if (coeffs.readIfPresent("g", g))
+    {
+        return g;
+    }
+
+    IOobject gIO
+    (
+        "g",
+        runTime.constant(),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        g = uniformDimensionedVectorField(gIO).value();
+    }
+
+    return g;
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Runs a rigid-body model from its dictionary with the stock"
+        " librigidBodyDynamics, for comparison"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+
+    const fileName lib(stockLibrary());
+    Info<< "stock library: " << lib.c_str() << nl << endl;
+
+    #include "createTime.H"
+
+    const dictionary coeffs(readCoeffs(runTime));
+
+    // The stock constructor reads g from coeffs but not constant/g
+    RBD::rigidBodyMotion motion(runTime, coeffs);
+    motion.g() = readG(runTime, coeffs);
+
+    const label nIter = coeffs.getOrDefault<label>("nIter", 1);
+
+    const scalarField tau(motion.nDoF(), Zero);
+    const Field<spatialVector> fx(motion.nBodies(), Zero);
+
+    // Bodies to report, in the order of the dictionary
+    const wordList names(coeffs.subDict("bodies").toc());
+    labelList bodyIDs(names.size());
+    forAll(names, bi)
+    {
+        bodyIDs[bi] = motion.bodyID(names[bi]);
+    }
+
+    auto report = [&]()
+    {
+        Info<< "Time = " << runTime.timeName() << endl;
+
+        for (const label id : bodyIDs)
+        {
+            motion.status(id);
+        }
+    };
+
+    report();
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        motion.newTime();
+        for (label iter = 0; iter < nIter; ++iter)
+        {
+            motion.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+        }
+
+        report();
+    }
+
+    Info<< "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
