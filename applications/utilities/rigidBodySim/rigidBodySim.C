@@ -163,6 +163,14 @@ int main(int argc, char *argv[])
 
     Sout.precision(IOstream::defaultPrecision());
 
+    if (!(runTime.deltaTValue() > 0))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry deltaT " << runTime.deltaTValue()
+            << " must be positive" << nl
+            << exit(FatalIOError);
+    }
+
     const dictionary coeffs(readCoeffs(runTime));
 
     // The written state of the start time, for a restart

@@ -47,7 +47,7 @@ Foam::scalar Foam::RBD::readPositive
 
     if (!std::isfinite(v) || v < 0 || (!allowZero && v == 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup(key))
             << "Entry " << key << ' ' << v << " in " << dict.dictName()
             << " must be " << (allowZero ? "non-negative" : "positive") << nl
             << exit(FatalIOError);
@@ -64,7 +64,7 @@ Foam::vector Foam::RBD::readAxis(const dictionary& dict, const word& key)
 
     if (!(magA > VSMALL) || !std::isfinite(magA))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup(key))
             << "Entry " << key << ' ' << a << " in " << dict.dictName()
             << " must be a non-zero vector" << nl
             << exit(FatalIOError);
@@ -156,7 +156,7 @@ void Foam::RBD::rigidBodyInertia::check
 
     if (!(m_ > 0) || !std::isfinite(m_))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("mass"))
             << "Body " << dict.dictName() << ": mass " << m_
             << " must be positive" << nl
             << exit(FatalIOError);
@@ -167,7 +167,7 @@ void Foam::RBD::rigidBodyInertia::check
     const scalar trI = tr(Ic_);
     if (!(trI > 0) || !std::isfinite(trI))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("inertia"))
             << "Body " << dict.dictName() << ": inertia " << Ic_
             << " about the centre of mass is not positive definite" << nl
             << exit(FatalIOError);
@@ -185,7 +185,7 @@ void Foam::RBD::rigidBodyInertia::check
         )
     )
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("inertia"))
             << "Body " << dict.dictName() << ": inertia " << Ic_
             << " about the centre of mass is not positive definite" << nl
             << exit(FatalIOError);
@@ -204,7 +204,7 @@ void Foam::RBD::rigidBodyInertia::check
 
     if (!semiDefinite)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("inertia"))
             << "Body " << dict.dictName() << ": inertia " << Ic_
             << " about the centre of mass has principal moments that break"
             << " the triangle inequality (no real body has them)" << nl

@@ -30,7 +30,14 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
     nDoF_ += jointPtr->nDoF();
     unitQuaternions_ = unitQuaternions_ || jointPtr->unitQuaternion();
 
-    bodyIDs_.insert(bodyPtr->name(), bodyID);
+    if (!bodyIDs_.insert(bodyPtr->name(), bodyID))
+    {
+        FatalErrorInFunction
+            << "Body name " << bodyPtr->name() << " is used twice (names"
+            << " NAME_jointK are taken by the frames of NAME's composite"
+            << " joint)" << nl
+            << exit(FatalError);
+    }
     I_.append(bodyPtr->spatial());
     bodies_.append(bodyPtr.ptr());
     joints_.append(jointPtr.ptr());
@@ -62,7 +69,9 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
             if (found(name))
             {
                 FatalIOErrorInFunction(bodyDict)
-                    << "Body " << name << " is defined twice" << nl
+                    << "Body name " << name << " is already taken (names"
+                    << " NAME_jointK belong to the frames of NAME's"
+                    << " composite joint)" << nl
                     << exit(FatalIOError);
             }
 
@@ -126,10 +135,17 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
                 bodyDict.found("mergeWith") ? "mergeWith" : "parent"
             );
 
-            FatalIOErrorInFunction(bodyDict)
+            const word parentName(bodyDict.get<word>(parentKey));
+
+            FatalIOErrorInFunction(bodyDict.lookup(parentKey))
                 << "Body " << waiting[0] << ": " << parentKey << ' '
-                << bodyDict.get<word>(parentKey)
-                << " is not a body of the model" << nl
+                << parentName
+                << (
+                       bodiesDict.found(parentName)
+                     ? " is a body that never reaches root: the parents"
+                       " of the waiting bodies form a cycle"
+                     : " is not a body of the model"
+                   ) << nl
                 << "Bodies: " << bodyNames() << nl
                 << "(bodies waiting for a parent: " << waiting << ")" << nl
                 << exit(FatalIOError);
@@ -172,7 +188,12 @@ void Foam::RBD::rigidBodyModel::checkMasses(const dictionary& dict) const
     {
         if (joints_[i].nDoF() && !(subtreeMass[i] > 0))
         {
-            FatalIOErrorInFunction(dict)
+            const dictionary& bodyDict =
+                dict.found(bodies_[i].name())
+              ? dict.subDict(bodies_[i].name())
+              : dict;
+
+            FatalIOErrorInFunction(bodyDict)
                 << "The " << joints_[i].type() << " joint of body "
                 << bodies_[i].name() << " moves no mass: give the body,"
                 << " or one carried by it, a mass" << nl

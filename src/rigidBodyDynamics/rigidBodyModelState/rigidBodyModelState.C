@@ -20,7 +20,7 @@ void Foam::RBD::rigidBodyModelState::readField
 
     if (values.size() != nDoF)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup(key))
             << "Entry " << key << " has " << values.size()
             << " values; the model has " << nDoF << " degrees of freedom"
             << nl << exit(FatalIOError);
@@ -30,7 +30,7 @@ void Foam::RBD::rigidBodyModelState::readField
     {
         if (!std::isfinite(values[i]))
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInFunction(dict.lookup(key))
                 << "Entry " << key << " holds " << values[i]
                 << " at index " << i << nl
                 << exit(FatalIOError);

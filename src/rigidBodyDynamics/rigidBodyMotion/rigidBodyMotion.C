@@ -12,19 +12,19 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
 
     if (!(aRelax_ > 0 && aRelax_ <= 1))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("accelerationRelaxation"))
             << "Entry accelerationRelaxation " << aRelax_
             << " must be in (0, 1]" << nl << exit(FatalIOError);
     }
     if (!(aDamp_ > 0 && aDamp_ <= 1))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("accelerationDamping"))
             << "Entry accelerationDamping " << aDamp_
             << " must be in (0, 1]" << nl << exit(FatalIOError);
     }
     if (nIter_ < 1)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("nIter"))
             << "Entry nIter " << nIter_ << " must be at least 1" << nl
             << exit(FatalIOError);
     }

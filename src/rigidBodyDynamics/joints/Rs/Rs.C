@@ -101,7 +101,7 @@ void Foam::RBD::joints::Rs::checkState
 
     if (magSqr(v) > 1 + 1e-10)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("q"))
             << "Entry q: slots " << i << " to " << i + 2 << " " << v
             << " of the Rs joint are a unit quaternion's vector part and"
             << " must have length at most 1 (length " << mag(v) << ")" << nl
