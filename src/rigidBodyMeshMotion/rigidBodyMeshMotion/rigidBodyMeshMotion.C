@@ -5,6 +5,7 @@
 #include "pointPatchDist.H"
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
+#include "volFields.H"
 
 namespace Foam
 {
@@ -174,20 +175,60 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 }
 
 
-void Foam::rigidBodyMeshMotion::writeTables()
+void Foam::rigidBodyMeshMotion::storeRows()
 {
     if (!Pstream::master())
     {
         return;
     }
 
-    const Time& t = mesh().time();
+    const RBD::rigidBodyModelWorkspace& ws = model_.workspace();
+
+    // Restraint forces on the state now
+    scalarField tauR(model_.nDoF(), Zero);
+    Field<spatialVector> fxR(model_.nBodies(), Zero);
+    model_.applyRestraints(model_.state(), ws, tauR, fxR);
+
+    rows_.setSize(bodyMeshes_.size());
+
+    forAll(bodyMeshes_, bi)
+    {
+        const label id = bodyMeshes_[bi].bodyID;
+        const label master = model_.masterID(id);
+        const spatialTransform X(model_.X0(id, ws));
+        const spatialVector v(model_.v(id, Zero, ws));
+        const spatialVector& ff = fx_[master];
+        const spatialVector& fr = fxR[master];
+
+        scalarField& row = rows_[bi];
+        row.setSize(31);
+        label k = 0;
+        row[k++] = mesh().time().value();
+        for (const scalar s : X.r()) row[k++] = s;
+        for (const scalar s : X.E()) row[k++] = s;
+        for (const scalar s : v.l()) row[k++] = s;
+        for (const scalar s : v.w()) row[k++] = s;
+        for (const scalar s : ff.l()) row[k++] = s;
+        for (const scalar s : ff.w()) row[k++] = s;
+        for (const scalar s : fr.l()) row[k++] = s;
+        for (const scalar s : fr.w()) row[k++] = s;
+    }
+}
+
+
+void Foam::rigidBodyMeshMotion::writeRows()
+{
+    if (!Pstream::master() || rows_.empty())
+    {
+        return;
+    }
 
     if (tables_.empty())
     {
         const fileName dir
         (
-            t.globalPath()/"postProcessing"/"rigidBodyMotion"/t.timeName()
+            mesh().time().globalPath()
+           /"postProcessing"/"rigidBodyMotion"/startTimeName_
         );
         mkDir(dir);
 
@@ -206,34 +247,18 @@ void Foam::rigidBodyMeshMotion::writeTables()
         }
     }
 
-    const RBD::rigidBodyModelWorkspace& ws = model_.workspace();
-
-    // Restraint forces on the state now
-    scalarField tauR(model_.nDoF(), Zero);
-    Field<spatialVector> fxR(model_.nBodies(), Zero);
-    model_.applyRestraints(model_.state(), ws, tauR, fxR);
-
-    forAll(bodyMeshes_, bi)
+    forAll(rows_, bi)
     {
-        const label id = bodyMeshes_[bi].bodyID;
-        const label master = model_.masterID(id);
-        const spatialTransform X(model_.X0(id, ws));
-        const spatialVector v(model_.v(id, Zero, ws));
-        const spatialVector& ff = fx_[master];
-        const spatialVector& fr = fxR[master];
-
         OFstream& os = tables_[bi];
-        os  << t.value();
-        for (const scalar s : X.r()) os << ' ' << s;
-        for (const scalar s : X.E()) os << ' ' << s;
-        for (const scalar s : v.l()) os << ' ' << s;
-        for (const scalar s : v.w()) os << ' ' << s;
-        for (const scalar s : ff.l()) os << ' ' << s;
-        for (const scalar s : ff.w()) os << ' ' << s;
-        for (const scalar s : fr.l()) os << ' ' << s;
-        for (const scalar s : fr.w()) os << ' ' << s;
+        const scalarField& row = rows_[bi];
+        forAll(row, k)
+        {
+            os  << (k ? " " : "") << row[k];
+        }
         os  << endl;
     }
+
+    rows_.clear();
 }
 
 
@@ -251,6 +276,7 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
     curTimeIndex_(-1),
+    startTimeName_(mesh.time().timeName()),
     tau_(model_.nDoF(), Zero),
     fx_(model_.nBodies(), Zero)
 {
@@ -278,6 +304,14 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     }
 
     readBodyMeshes();
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::rigidBodyMeshMotion::~rigidBodyMeshMotion()
+{
+    writeRows();
 }
 
 
@@ -329,6 +363,7 @@ void Foam::rigidBodyMeshMotion::solve()
     // The start of a new time step
     if (curTimeIndex_ != t.timeIndex())
     {
+        writeRows();
         model_.newTime();
         curTimeIndex_ = t.timeIndex();
     }
@@ -349,6 +384,21 @@ void Foam::rigidBodyMeshMotion::solve()
     {
         if (forces_.empty())
         {
+            if
+            (
+                rhoName_ != "rhoInf"
+             && !mesh().foundObject<volScalarField>(rhoName_)
+            )
+            {
+                FatalIOErrorInFunction(coeffDict().lookup("rho"))
+                    << "Entry rho " << rhoName_ << ": no such density field;"
+                    << " give the name of one or, for a fluid of constant"
+                    << " density, rho rhoInf with rhoInf" << nl
+                    << "Fields: "
+                    << mesh().sortedNames<volScalarField>() << nl
+                    << exit(FatalIOError);
+            }
+
             forces_.setSize(bodyMeshes_.size());
             forAll(bodyMeshes_, bi)
             {
@@ -405,7 +455,7 @@ void Foam::rigidBodyMeshMotion::solve()
         }
     }
 
-    writeTables();
+    storeRows();
 }
 
 
