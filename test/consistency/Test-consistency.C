@@ -17,6 +17,7 @@ Description
 #include "testCheck.H"
 #include "testModels.H"
 #include "Random.H"
+#include "OStringStream.H"
 
 using namespace Foam;
 
@@ -198,6 +199,28 @@ void checkTree(Random& rnd, const label n, const label firstJoint)
         }
     }
     test::check(spd, "mass matrix positive definite, " + what);
+
+    // The model written and read back moves the same
+    OStringStream os;
+    os.precision(17);
+    static_cast<const RBD::rigidBodyModel&>(m).write(os);
+    IStringStream is(os.str());
+    const RBD::rigidBodyModel m2((dictionary(is)));
+
+    RBD::rigidBodyModelState state2(m2);
+    state2.q() = state.q();
+    state2.qDot() = state.qDot();
+    RBD::rigidBodyModelWorkspace ws2(m2);
+    m.forwardDynamics(state, ws, tau, fx);
+    m2.forwardDynamics(state2, ws2, tau, fx);
+
+    test::checkAbs
+    (
+        max(mag(state2.qDdot() - state.qDdot()))
+       /max(scalar(1), max(mag(state.qDdot()))),
+        0, 1e-12,
+        "model written and read back gives the same accelerations, " + what
+    );
 }
 
 } // End namespace consistencyTest

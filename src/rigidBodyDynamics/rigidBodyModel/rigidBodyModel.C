@@ -39,6 +39,9 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
             << exit(FatalError);
     }
     I_.append(bodyPtr->spatial());
+    givenJoints_.append(nullptr);
+    givenParent_.append(parentID);
+    givenXT_.append(XT);
     bodies_.append(bodyPtr.ptr());
     joints_.append(jointPtr.ptr());
     lambda_.append(parentID);
@@ -290,6 +293,14 @@ Foam::label Foam::RBD::rigidBodyModel::join
     PtrList<joint> chain;
     jointPtr->expand(chain);
 
+    if (chain.empty())
+    {
+        FatalErrorInFunction
+            << "Joint " << jointPtr->type() << " of body " << bodyPtr->name()
+            << " has no joints" << nl
+            << exit(FatalError);
+    }
+
     const word& name = bodyPtr->name();
 
     for (label k = 0; k < chain.size() - 1; ++k)
@@ -307,13 +318,19 @@ Foam::label Foam::RBD::rigidBodyModel::join
         X = spatialTransform();
     }
 
-    return addBody
+    const label id = addBody
     (
         parent,
         X,
         autoPtr<joint>(chain.set(chain.size() - 1, nullptr)),
         std::move(bodyPtr)
     );
+
+    givenJoints_.set(id, jointPtr.ptr());
+    givenParent_[id] = parentID;
+    givenXT_[id] = XT;
+
+    return id;
 }
 
 
@@ -563,16 +580,16 @@ void Foam::RBD::rigidBodyModel::write(Ostream& os) const
 
     for (label i = 1; i < nBodies(); ++i)
     {
-        if (isA<jointBody>(bodies_[i]))
+        if (!givenJoints_.set(i))
         {
             continue;
         }
         os.beginBlock(bodies_[i].name());
         bodies_[i].write(os);
-        os.writeEntry("parent", bodies_[lambda_[i]].name());
-        os.writeEntry("transform", XT_[i]);
+        os.writeEntry("parent", name(givenParent_[i]));
+        os.writeEntry("transform", givenXT_[i]);
         os.beginBlock("joint");
-        joints_[i].write(os);
+        givenJoints_[i].write(os);
         os.endBlock();
         os.endBlock();
     }
