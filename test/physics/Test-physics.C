@@ -411,6 +411,79 @@ void torsionSpring()
     }
 }
 
+//- A body in a fluid whose force lags one solve behind (the added-mass
+//  force of partitioned coupling, -Ma times the latest acceleration),
+//  solved with nIter solves per step: error at 1 s against the exact
+//  oscillation of mass m + Ma, or GREAT if the iterations diverge
+scalar addedMassError(const std::string& relaxation, const scalar Ma)
+{
+    const scalar m = 1, k = 100, x0 = 0.1;
+
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header("Newmark") + relaxation
+      + "bodies { b { type sphere; parent root; mass 1; radius 0.1;"
+        " centreOfMass (0 0 0); joint { type Pz; } } }"
+        " restraints { s { type linearSpring; body b; anchor (0 0 -1);"
+        " refAttachmentPt (0 0 0); stiffness 100; damping 0;"
+        " restLength 1; } } q (0.1);"
+        " qDdot (" + std::to_string(-k*x0/(m + Ma)) + ");"
+    );
+    RBD::rigidBodyMotion& mo = motion();
+
+    const scalarField tau(mo.nDoF(), Zero);
+    Field<spatialVector> fx(mo.nBodies(), Zero);
+    const label b = mo.bodyID("b");
+    const scalar dt = 1e-3;
+
+    for (label step = 0; step < 1000; ++step)
+    {
+        mo.newTime();
+        for (label iter = 0; iter < 20; ++iter)
+        {
+            fx[b] = spatialVector(0, 0, 0, 0, 0, -Ma*mo.state().qDdot()[0]);
+            mo.solve((step + 1)*dt, dt, tau, fx);
+        }
+        if (!(mag(mo.state().q()[0]) < 1e3))
+        {
+            return GREAT;
+        }
+    }
+
+    const scalar w = sqrt(k/(m + Ma));
+    return mag(mo.state().q()[0] - x0*cos(w*mo.state().t()));
+}
+
+
+void addedMass()
+{
+    // Ma/m = 3: plain iteration diverges (factor -3), Aitken converges
+    checkRange
+    (
+        addedMassError("accelerationRelaxation 1;", 3), 1, GREAT,
+        "added mass 3 m, constant relaxation 1: the iterations diverge"
+    );
+    checkAbs
+    (
+        addedMassError
+        (
+            "accelerationRelaxation 1; accelerationRelaxationType Aitken;", 3
+        ),
+        0, 1e-5,
+        "added mass 3 m, Aitken relaxation: oscillation of mass m + Ma"
+    );
+    checkAbs
+    (
+        addedMassError
+        (
+            "accelerationRelaxation 0.7; accelerationRelaxationType Aitken;",
+            0.2
+        ),
+        0, 1e-5,
+        "added mass 0.2 m, Aitken relaxation: oscillation of mass m + Ma"
+    );
+}
+
 } // End namespace physicsTest
 
 
@@ -427,6 +500,7 @@ int main(int argc, char *argv[])
     spinThroughPi();
     compositeVersusSimple();
     torsionSpring();
+    addedMass();
 
     return test::testResult();
 }

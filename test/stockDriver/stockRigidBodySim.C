@@ -34,6 +34,7 @@ Usage
 #include "IOdictionary.H"
 #include "uniformDimensionedFields.H"
 #include "rigidBodyMotion.H"
+#include "rigidBodySimInput.H"
 
 #include <dlfcn.h>
 #include <climits>
@@ -83,79 +84,6 @@ fileName stockLibrary()
     }
 
     return lib;
-}
-
-
-//- The rigid-body coefficients: rigidBodyMotionCoeffs of
-//  constant/dynamicMeshDict, or else the top level of
-//  constant/rigidBodyMotionDict
-dictionary readCoeffs(const Time& runTime)
-{
-    IOobject meshDictIO
-    (
-        "dynamicMeshDict",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (meshDictIO.typeHeaderOk<IOdictionary>(true))
-    {
-        const IOdictionary meshDict(meshDictIO);
-        return meshDict.subDict("rigidBodyMotionCoeffs");
-    }
-
-    IOobject motionDictIO
-    (
-        "rigidBodyMotionDict",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (!motionDictIO.typeHeaderOk<IOdictionary>(true))
-    {
-        FatalErrorInFunction
-            << "Neither " << meshDictIO.objectPath() << " nor "
-            << motionDictIO.objectPath() << " exists" << nl
-            << exit(FatalError);
-    }
-
-    const IOdictionary motionDict(motionDictIO);
-    return dictionary(motionDict);
-}
-
-
-//- Gravity: the coefficients' g, or else constant/g, or else zero
-vector readG(const Time& runTime, const dictionary& coeffs)
-{
-    vector g(Zero);
-
-    if (coeffs.readIfPresent("g", g))
-    {
-        return g;
-    }
-
-    IOobject gIO
-    (
-        "g",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
-    {
-        g = uniformDimensionedVectorField(gIO).value();
-    }
-
-    return g;
 }
 
 

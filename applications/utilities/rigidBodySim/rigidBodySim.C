@@ -38,84 +38,11 @@ Usage
 #include "OSspecific.H"
 #include "rigidBodyMotion.H"
 #include "jointBody.H"
+#include "rigidBodySimInput.H"
 
 using namespace Foam;
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-//- The rigid-body coefficients of the case
-dictionary readCoeffs(const Time& runTime)
-{
-    IOobject dmdIO
-    (
-        "dynamicMeshDict",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (dmdIO.typeHeaderOk<IOdictionary>(true))
-    {
-        const IOdictionary dmd(dmdIO);
-        Info<< "Reading rigidBodyMotionCoeffs from " << dmd.objectPath()
-            << nl << endl;
-        return dmd.subDict("rigidBodyMotionCoeffs");
-    }
-
-    IOobject rbmIO
-    (
-        "rigidBodyMotionDict",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (!rbmIO.typeHeaderOk<IOdictionary>(true))
-    {
-        FatalErrorInFunction
-            << "Neither " << dmdIO.objectPath() << " nor "
-            << rbmIO.objectPath() << " exists" << nl
-            << exit(FatalError);
-    }
-
-    const IOdictionary rbm(rbmIO);
-    Info<< "Reading " << rbm.objectPath() << nl << endl;
-    return dictionary(rbm);
-}
-
-
-//- Gravity: the coefficients' g, or constant/g, or zero
-vector readG(const Time& runTime, const dictionary& coeffs)
-{
-    vector g(Zero);
-
-    if (coeffs.readIfPresent("g", g))
-    {
-        return g;
-    }
-
-    IOobject gIO
-    (
-        "g",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
-    {
-        g = uniformDimensionedVectorField(gIO).value();
-    }
-
-    return g;
-}
-
 
 //- The joint slots that move a body of the tree: its own joint's and those
 //  of the jointBodies of its composite joint

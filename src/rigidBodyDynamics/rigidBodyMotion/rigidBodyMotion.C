@@ -8,6 +8,19 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
     aRelax_ = dict.getOrDefault<scalar>("accelerationRelaxation", 1);
     aDamp_ = dict.getOrDefault<scalar>("accelerationDamping", 1);
     nIter_ = dict.getOrDefault<label>("nIter", 1);
+
+    const word relaxType
+    (
+        dict.getOrDefault<word>("accelerationRelaxationType", "constant")
+    );
+    if (relaxType != "constant" && relaxType != "Aitken")
+    {
+        FatalIOErrorInFunction(dict.lookup("accelerationRelaxationType"))
+            << "Unknown accelerationRelaxationType " << relaxType << nl
+            << "Valid types: 2(constant Aitken)" << nl
+            << exit(FatalIOError);
+    }
+    aitken_ = (relaxType == "Aitken");
     report_ = dict.getOrDefault<Switch>("report", false);
 
     if (!(aRelax_ > 0 && aRelax_ <= 1))
@@ -68,6 +81,9 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion(const dictionary& dict)
     wsValid_(false),
     aRelax_(1),
     aDamp_(1),
+    aitken_(false),
+    omega_(1),
+    r0_(nDoF(), Zero),
     nIter_(1),
     report_(false),
     iteration_(0),
@@ -129,10 +145,33 @@ void Foam::RBD::rigidBodyMotion::forwardDynamics
     accelerations(state, tau, fx);
 
     scalarField& qDdot = state.qDdot();
+
+    // Relaxation factor: constant, or Aitken's from the second solve of a
+    // step on (the first starts from the previous step's accelerations)
+    scalar omega = aRelax_;
+
+    if (aitken_ && &state == &motionState_)
+    {
+        scalar rdr = 0, dr2 = 0;
+        forAll(qDdot, i)
+        {
+            const scalar r = qDdot[i] - qDdotPrev_[i];
+            const scalar dr = r - r0_[i];
+            rdr += r0_[i]*dr;
+            dr2 += sqr(dr);
+            r0_[i] = r;
+        }
+
+        if (iteration_ >= 1 && dr2 > VSMALL)
+        {
+            omega = min(max(-omega_*rdr/dr2, scalar(0.01)), scalar(1));
+        }
+        omega_ = omega;
+    }
+
     forAll(qDdot, i)
     {
-        qDdot[i] =
-            aDamp_*(aRelax_*qDdot[i] + (1 - aRelax_)*qDdotPrev_[i]);
+        qDdot[i] = aDamp_*(omega*qDdot[i] + (1 - omega)*qDdotPrev_[i]);
     }
 }
 
