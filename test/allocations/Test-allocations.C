@@ -107,6 +107,7 @@ const char* model =
 int main(int argc, char *argv[])
 {
     const char* solvers[] = {"Newmark", "CrankNicolson", "symplectic"};
+    const char* relaxations[] = {"quasiNewton", "Aitken", "constant"};
 
     // The counter sees an allocation made by OpenFOAM's containers
     {
@@ -117,12 +118,14 @@ int main(int argc, char *argv[])
         test::check(nNew > 0, "the operator new counter sees allocations");
     }
 
-    for (const char* solver : solvers)
+    for (label si = 0; si < 3; ++si)
     {
+        const char* solver = solvers[si];
         autoPtr<RBD::rigidBodyMotion> m = test::motion
         (
             std::string("solver { type ") + solver + "; }"
-            " accelerationRelaxation 0.7;" + model
+            " accelerationRelaxation 0.7; accelerationRelaxationType "
+          + relaxations[si] + ";" + model
         );
 
         const scalarField tau(m->nDoF(), Zero);
@@ -157,6 +160,7 @@ int main(int argc, char *argv[])
             nNew, 0, 0,
             std::string("allocations in 100 steps (3 solves each) of ")
           + std::to_string(m->nDoF()) + "-dof model, " + solver
+          + ", " + relaxations[si] + " relaxation"
         );
         test::check
         (

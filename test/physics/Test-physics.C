@@ -482,6 +482,28 @@ void addedMass()
         0, 1e-5,
         "added mass 0.2 m, Aitken relaxation: oscillation of mass m + Ma"
     );
+    checkAbs
+    (
+        addedMassError
+        (
+            "accelerationRelaxation 0.7;"
+            " accelerationRelaxationType quasiNewton;",
+            3
+        ),
+        0, 1e-5,
+        "added mass 3 m, quasi-Newton relaxation: oscillation of mass m + Ma"
+    );
+    checkAbs
+    (
+        addedMassError
+        (
+            "accelerationRelaxation 0.7;"
+            " accelerationRelaxationType quasiNewton;",
+            20
+        ),
+        0, 1e-5,
+        "added mass 20 m, quasi-Newton relaxation: oscillation of mass m + Ma"
+    );
 }
 
 } // End namespace physicsTest

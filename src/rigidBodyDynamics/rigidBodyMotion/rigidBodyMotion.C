@@ -13,14 +13,27 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
     (
         dict.getOrDefault<word>("accelerationRelaxationType", "constant")
     );
-    if (relaxType != "constant" && relaxType != "Aitken")
+    if (relaxType == "constant")
+    {
+        relaxType_ = relaxation::constant;
+    }
+    else if (relaxType == "Aitken")
+    {
+        relaxType_ = relaxation::Aitken;
+    }
+    else if (relaxType == "quasiNewton")
+    {
+        relaxType_ = relaxation::quasiNewton;
+    }
+    else
     {
         FatalIOErrorInFunction(dict.lookup("accelerationRelaxationType"))
             << "Unknown accelerationRelaxationType " << relaxType << nl
-            << "Valid types: 2(constant Aitken)" << nl
+            << "Valid types: 3(constant Aitken quasiNewton)" << nl
             << exit(FatalIOError);
     }
-    aitken_ = (relaxType == "Aitken");
+    omega_ = aRelax_;
+    resetJacobian();
     report_ = dict.getOrDefault<Switch>("report", false);
 
     if (!(aRelax_ > 0 && aRelax_ <= 1))
@@ -81,9 +94,14 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion(const dictionary& dict)
     wsValid_(false),
     aRelax_(1),
     aDamp_(1),
-    aitken_(false),
+    relaxType_(relaxation::constant),
     omega_(1),
+    a0_(nDoF(), Zero),
     r0_(nDoF(), Zero),
+    Jinv_(nDoF(), Zero),
+    da_(nDoF(), Zero),
+    dr_(nDoF(), Zero),
+    JinvDr_(nDoF(), Zero),
     nIter_(1),
     report_(false),
     iteration_(0),
@@ -133,6 +151,16 @@ void Foam::RBD::rigidBodyMotion::newTime()
 }
 
 
+void Foam::RBD::rigidBodyMotion::resetJacobian()
+{
+    Jinv_ = Zero;
+    for (label i = 0; i < Jinv_.m(); ++i)
+    {
+        Jinv_(i, i) = -aRelax_;
+    }
+}
+
+
 void Foam::RBD::rigidBodyMotion::forwardDynamics
 (
     rigidBodyModelState& state,
@@ -140,17 +168,76 @@ void Foam::RBD::rigidBodyMotion::forwardDynamics
     const Field<spatialVector>& fx
 )
 {
+    // The accelerations given (those the forces were computed with)
     qDdotPrev_ = state.qDdot();
 
     accelerations(state, tau, fx);
 
     scalarField& qDdot = state.qDdot();
 
-    // Relaxation factor: constant, or Aitken's from the second solve of a
-    // step on (the first starts from the previous step's accelerations)
+    // Only the state now is iterated; any other state is relaxed plainly
+    const bool iterated = (&state == &motionState_);
+    const bool pair = iterated && iteration_ >= 1;
+
+    if (iterated && relaxType_ == relaxation::quasiNewton)
+    {
+        // Residual, and Broyden's inverse update from the previous solve:
+        // Jinv += (da - Jinv dr) dr^T/(dr . dr)
+        scalar dr2 = 0;
+        forAll(qDdot, i)
+        {
+            const scalar r = qDdot[i] - qDdotPrev_[i];
+            da_[i] = qDdotPrev_[i] - a0_[i];
+            dr_[i] = r - r0_[i];
+            dr2 += sqr(dr_[i]);
+            a0_[i] = qDdotPrev_[i];
+            r0_[i] = r;
+        }
+
+        if (pair && dr2 > VSMALL)
+        {
+            const label n = Jinv_.m();
+            bool valid = true;
+            for (label i = 0; i < n; ++i)
+            {
+                JinvDr_[i] = 0;
+                for (label j = 0; j < n; ++j)
+                {
+                    JinvDr_[i] += Jinv_(i, j)*dr_[j];
+                }
+            }
+            for (label i = 0; i < n; ++i)
+            {
+                const scalar c = (da_[i] - JinvDr_[i])/dr2;
+                for (label j = 0; j < n; ++j)
+                {
+                    Jinv_(i, j) += c*dr_[j];
+                }
+                // Each degree of freedom is relaxed by a factor in (0, 2)
+                valid = valid && -Jinv_(i, i) > 0.005 && -Jinv_(i, i) < 2;
+            }
+            if (!valid)
+            {
+                resetJacobian();
+            }
+        }
+
+        // a = a0 - Jinv r
+        forAll(qDdot, i)
+        {
+            scalar Jr = 0;
+            forAll(qDdot, j)
+            {
+                Jr += Jinv_(i, j)*r0_[j];
+            }
+            qDdot[i] = aDamp_*(qDdotPrev_[i] - Jr);
+        }
+        return;
+    }
+
     scalar omega = aRelax_;
 
-    if (aitken_ && &state == &motionState_)
+    if (iterated && relaxType_ == relaxation::Aitken)
     {
         scalar rdr = 0, dr2 = 0;
         forAll(qDdot, i)
@@ -162,9 +249,15 @@ void Foam::RBD::rigidBodyMotion::forwardDynamics
             r0_[i] = r;
         }
 
-        if (iteration_ >= 1 && dr2 > VSMALL)
+        if (pair && dr2 > VSMALL)
         {
             omega = min(max(-omega_*rdr/dr2, scalar(0.01)), scalar(1));
+        }
+        else
+        {
+            // The first solve of a step: the factor the previous step
+            // ended with, if smaller
+            omega = min(omega_, aRelax_);
         }
         omega_ = omega;
     }
