@@ -105,6 +105,7 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion(const dictionary& dict)
     nIter_(1),
     report_(false),
     iteration_(0),
+    provisionalQDdot0_(false),
     rtau_(nDoF(), Zero),
     rfx_(nBodies(), Zero),
     qDdotPrev_(nDoF(), Zero)
@@ -148,6 +149,7 @@ void Foam::RBD::rigidBodyMotion::newTime()
 {
     motionState0_ = motionState_;
     iteration_ = 0;
+    provisionalQDdot0_ = false;
 }
 
 
@@ -281,6 +283,11 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration
         motionState0_.setQDdotValid(true);
         motionState_.qDdot() = motionState0_.qDdot();
         motionState_.setQDdotValid(true);
+        provisionalQDdot0_ = true;
+    }
+    else if (provisionalQDdot0_)
+    {
+        accelerations(motionState0_, tau, fx);
     }
 }
 

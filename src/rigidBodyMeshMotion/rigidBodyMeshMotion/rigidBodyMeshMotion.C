@@ -3,6 +3,7 @@
 #include "polyMesh.H"
 #include "pointMesh.H"
 #include "pointPatchDist.H"
+#include "pointConstraints.H"
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
 #include "volFields.H"
@@ -109,6 +110,7 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
         }
 
         b.X00 = model_.X0(b.bodyID, ws00);
+        b.X = model_.X0(b.bodyID);
 
         bodies.append(b);
     }
@@ -270,7 +272,7 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     const IOdictionary& dict
 )
 :
-    points0MotionSolver(mesh, dict, typeName),
+    displacementMotionSolver(mesh, dict, typeName),
     model_(coeffDict(), stateDict(mesh, coeffDict())),
     test_(coeffDict().getOrDefault<Switch>("test", false)),
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
@@ -319,31 +321,52 @@ Foam::rigidBodyMeshMotion::~rigidBodyMeshMotion()
 
 Foam::tmp<Foam::pointField> Foam::rigidBodyMeshMotion::curPoints() const
 {
-    tmp<pointField> tnewPoints(new pointField(points0()));
-    pointField& newPoints = tnewPoints.ref();
+    tmp<pointField> tnewPoints
+    (
+        new pointField(points0() + pointDisplacement_.primitiveField())
+    );
+
+    twoDCorrectPoints(tnewPoints.ref());
+
+    return tnewPoints;
+}
+
+
+void Foam::rigidBodyMeshMotion::displace()
+{
+    pointField& disp = pointDisplacement_.primitiveFieldRef();
     const pointField& p0 = points0();
+
+    // Only the points within the bodies' outerDistance move
+    forAll(bodyMeshes_, bi)
+    {
+        for (const label pi : bodyMeshes_[bi].pointIDs)
+        {
+            disp[pi] = Zero;
+        }
+    }
 
     forAll(bodyMeshes_, bi)
     {
         const bodyMesh& b = bodyMeshes_[bi];
 
         // The body's motion since points0: p -> E^T E00 (p - r00) + r
-        const spatialTransform& X = b.X;
-        const tensor R(X.E().T() & b.X00.E());
+        const tensor R(b.X.E().T() & b.X00.E());
         const vector& r00 = b.X00.r();
-        const vector& r = X.r();
+        const vector& r = b.X.r();
 
         forAll(b.pointIDs, i)
         {
             const label pi = b.pointIDs[i];
-            newPoints[pi] +=
-                b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
+            disp[pi] += b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
         }
     }
 
-    twoDCorrectPoints(newPoints);
-
-    return tnewPoints;
+    // Boundary conditions of pointDisplacement: walls stay, slips slide
+    pointConstraints::New(pointMesh::New(mesh())).constrainDisplacement
+    (
+        pointDisplacement_
+    );
 }
 
 
@@ -447,6 +470,8 @@ void Foam::rigidBodyMeshMotion::solve()
         bodyMeshes_[bi].X = model_.X0(bodyMeshes_[bi].bodyID);
     }
 
+    displace();
+
     if (model_.report())
     {
         forAll(bodyMeshes_, bi)
@@ -484,7 +509,7 @@ bool Foam::rigidBodyMeshMotion::writeObject
 
 bool Foam::rigidBodyMeshMotion::read()
 {
-    if (points0MotionSolver::read())
+    if (displacementMotionSolver::read())
     {
         model_.read(coeffDict());
         return true;
