@@ -506,6 +506,72 @@ void addedMass()
     );
 }
 
+//- A ball moving at 1 m/s into a softWall: an undamped contact lasts C
+//  and returns the speed; damping ratio psi returns
+//  exp(-psi pi/sqrt(1 - psi^2)) of it
+void softWall()
+{
+    for (const scalar psi : {0.0, 0.2})
+    {
+        autoPtr<RBD::rigidBodyMotion> motion = test::motion
+        (
+            header("Newmark")
+          + "bodies { ball { type sphere; parent root; mass 2; radius 0.1;"
+            " centreOfMass (0 0 0); joint { type Pz; } } }"
+            " restraints { floor { type softWall; body ball;"
+            " anchor (0 0 0); wallNormal (0 0 2);"
+            " refAttachmentPt (0 0 -0.1); C 0.05; psi "
+          + std::to_string(psi) + "; } }"
+            " q (0.5); qDot (-1);"
+        );
+
+        test::runTo(motion(), 1e-5, 0.6);
+
+        const scalar e = exp(-psi*constant::mathematical::pi/sqrt(1 - sqr(psi)));
+        checkAbs
+        (
+            motion->state().qDot()[0], e, 2e-3,
+            "softWall bounce: speed after contact, psi "
+          + std::to_string(psi)
+        );
+        if (psi == 0)
+        {
+            checkAbs
+            (
+                motion->state().q()[0], 0.1 + 0.15, 2e-3,
+                "softWall bounce: contact lasts C = 0.05 s (position at 0.6 s)"
+            );
+        }
+    }
+}
+
+
+//- prescribedRotation drives a free rotation to the prescribed rate
+void prescribedRotation()
+{
+    autoPtr<RBD::rigidBodyMotion> motion = test::motion
+    (
+        header("Newmark")
+      + "bodies { rotor { type cuboid; parent root; mass 3;"
+        " L (0.4 0.1 0.2); centreOfMass (0 0 0); joint { type Ry; } } }"
+        " restraints { drive { type prescribedRotation; body rotor;"
+        " axis (0 1 0); omega table ((0 (0 0 0)) (1 (0 2 0))); } }"
+    );
+
+    test::runTo(motion(), 1e-3, 0.5);
+    checkAbs
+    (
+        motion->state().qDot()[0], 1, 5e-3,
+        "prescribedRotation: rate follows omega(t) = 2t (at 0.5 s)"
+    );
+    test::runTo(motion(), 1e-3, 0.5);
+    checkAbs
+    (
+        motion->state().qDot()[0], 2, 5e-3,
+        "prescribedRotation: rate follows omega(t) = 2t (at 1 s)"
+    );
+}
+
 } // End namespace physicsTest
 
 
@@ -523,6 +589,8 @@ int main(int argc, char *argv[])
     compositeVersusSimple();
     torsionSpring();
     addedMass();
+    softWall();
+    prescribedRotation();
 
     return test::testResult();
 }

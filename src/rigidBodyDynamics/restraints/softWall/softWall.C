@@ -1,0 +1,89 @@
+#include "softWall.H"
+#include "rigidBodyModel.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(softWall, 0);
+    addToRunTimeSelectionTable(restraint, softWall, dictionary);
+}
+}
+}
+
+
+Foam::RBD::restraints::softWall::softWall
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model)
+{
+    read(dict);
+}
+
+
+void Foam::RBD::restraints::softWall::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    const scalar d = wallNormal_ & (p - anchor_);
+
+    if (d < 0)
+    {
+        const scalar dDot =
+            wallNormal_ & model_.v(bodyID_, refAttachmentPt_, ws).l();
+        const scalar m = model_.bodies()[masterID_].m();
+        const scalar wn = constant::mathematical::pi/C_;
+
+        addForce
+        (
+            fx,
+            p,
+            -m*(sqr(wn)*d + 2*psi_*wn*dDot)*wallNormal_
+        );
+    }
+}
+
+
+bool Foam::RBD::restraints::softWall::read(const dictionary& dict)
+{
+    restraint::read(dict);
+
+    anchor_ = dict.get<vector>("anchor");
+    wallNormal_ = readAxis(dict, "wallNormal");
+    refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
+    C_ = readPositive(dict, "C");
+    psi_ = readPositive(dict, "psi", true);
+
+    if (psi_ >= 1)
+    {
+        FatalIOErrorInFunction(dict.lookup("psi"))
+            << "Entry psi " << psi_ << " (damping ratio) must be below 1"
+            << nl << exit(FatalIOError);
+    }
+
+    return true;
+}
+
+
+void Foam::RBD::restraints::softWall::write(Ostream& os) const
+{
+    restraint::write(os);
+    os.writeEntry("anchor", anchor_);
+    os.writeEntry("wallNormal", wallNormal_);
+    os.writeEntry("refAttachmentPt", refAttachmentPt_);
+    os.writeEntry("C", C_);
+    os.writeEntry("psi", psi_);
+}
