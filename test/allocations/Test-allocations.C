@@ -102,7 +102,7 @@ const char* model =
     " w { type softWall; body a; anchor (0 0 0.5); wallNormal (0 0 -1);"
     "     refAttachmentPt (0 0 0); C 0.05; psi 0.1; }"
     " p { type prescribedRotation; body b; axis (0 1 0);"
-    "     omega table ((0 (0 0 0)) (1 (0 1 0))); }"
+    "     omega (0 1 0); }"
     "}"
     "qDot (0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.1 0.2 0.3 0.4 0.5 0.1 0.2 0.3"
     " 0.4 0.5 0.6 0.7 0.8 0.9 1 1.1 1.2 1.3);";
