@@ -187,9 +187,9 @@ void Foam::rigidBodyMeshMotion::storeRows()
     const RBD::rigidBodyModelWorkspace& ws = model_.workspace();
 
     // Restraint forces on the state now
-    scalarField tauR(model_.nDoF(), Zero);
-    Field<spatialVector> fxR(model_.nBodies(), Zero);
-    model_.applyRestraints(model_.state(), ws, tauR, fxR);
+    tauR_ = Zero;
+    fxR_ = Zero;
+    model_.applyRestraints(model_.state(), ws, tauR_, fxR_);
 
     rows_.setSize(bodyMeshes_.size());
 
@@ -200,7 +200,7 @@ void Foam::rigidBodyMeshMotion::storeRows()
         const spatialTransform X(model_.X0(id, ws));
         const spatialVector v(model_.v(id, Zero, ws));
         const spatialVector& ff = fx_[master];
-        const spatialVector& fr = fxR[master];
+        const spatialVector& fr = fxR_[master];
 
         scalarField& row = rows_[bi];
         row.setSize(31);
@@ -280,7 +280,9 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     curTimeIndex_(-1),
     startTimeName_(mesh.time().timeName()),
     tau_(model_.nDoF(), Zero),
-    fx_(model_.nBodies(), Zero)
+    fx_(model_.nBodies(), Zero),
+    tauR_(model_.nDoF(), Zero),
+    fxR_(model_.nBodies(), Zero)
 {
     Info<< "rigidBodyMotion: the rigid-body dynamics project's"
         << " librigidBodyMeshMotion (not OpenFOAM's stock library)" << endl;
