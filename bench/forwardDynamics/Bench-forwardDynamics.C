@@ -22,6 +22,7 @@ Description
     #include "rigidBodyModelState.H"
 #else
     #include "rigidBodyModel.H"
+    #include "rigidBodyRestraint.H"
 #endif
 
 using namespace Foam;
@@ -79,8 +80,19 @@ int main(int argc, char *argv[])
         RBD::rigidBodyModelState state(m);
         #else
         RBD::rigidBodyModel m(dict);
-        RBD::rigidBodyModelState state(m);
+        RBD::rigidBodyModelState state(m.nDoF());
         RBD::rigidBodyModelWorkspace ws(m);
+        PtrList<RBD::restraint> restraints;
+        if (dict.found("restraints"))
+        {
+            for (const entry& e : dict.subDict("restraints"))
+            {
+                restraints.append
+                (
+                    RBD::restraint::New(e.keyword(), e.dict(), m)
+                );
+            }
+        }
         #endif
 
         forAll(state.q(), i)
@@ -112,7 +124,10 @@ int main(int argc, char *argv[])
                 m.forwardDynamics(state, tau, fx);
                 #else
                 m.kinematics(state, ws);
-                m.applyRestraints(state, ws, tau, fx);
+                forAll(restraints, ri)
+                {
+                    restraints[ri].restrain(tau, fx, state, ws);
+                }
                 m.articulatedBodyDynamics(tau, fx, ws, state.qDdot());
                 #endif
             }

@@ -110,12 +110,13 @@ std::string randomModel(Random& rnd, const label n, const label firstJoint)
 
 void checkTree(Random& rnd, const label n, const label firstJoint)
 {
-    autoPtr<RBD::rigidBodyMotion> mPtr =
-        test::motion(randomModel(rnd, n, firstJoint));
-    RBD::rigidBodyMotion& m = mPtr();
+    const RBD::rigidBodyModel m
+    (
+        test::dictFromString(randomModel(rnd, n, firstJoint))
+    );
 
     const label nDoF = m.nDoF();
-    RBD::rigidBodyModelState state(m);
+    RBD::rigidBodyModelState state(nDoF);
     RBD::rigidBodyModelWorkspace ws(m);
 
     // Random state; quaternion slots within the unit ball
@@ -203,11 +204,11 @@ void checkTree(Random& rnd, const label n, const label firstJoint)
     // The model written and read back moves the same
     OStringStream os;
     os.precision(17);
-    static_cast<const RBD::rigidBodyModel&>(m).write(os);
+    m.write(os);
     IStringStream is(os.str());
     const RBD::rigidBodyModel m2((dictionary(is)));
 
-    RBD::rigidBodyModelState state2(m2);
+    RBD::rigidBodyModelState state2(m2.nDoF());
     state2.q() = state.q();
     state2.qDot() = state.qDot();
     RBD::rigidBodyModelWorkspace ws2(m2);

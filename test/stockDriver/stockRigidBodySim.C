@@ -105,11 +105,27 @@ int main(int argc, char *argv[])
 
     #include "createTime.H"
 
-    const dictionary coeffs(readCoeffs(runTime));
+    const dictionary coeffs(rigidBodySimCoeffs(runTime));
 
-    // The stock constructor reads g from coeffs but not constant/g
+    // The stock constructor reads g from coeffs but not constant/g: gravity
+    // as the project's rigidBodyDriver takes it, coeffs' g, else constant/g
     RBD::rigidBodyMotion motion(runTime, coeffs);
-    motion.g() = readG(runTime, coeffs);
+    if (!coeffs.found("g"))
+    {
+        IOobject gIO
+        (
+            "g",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            motion.g() = uniformDimensionedVectorField(gIO).value();
+        }
+    }
 
     const label nIter = coeffs.getOrDefault<label>("nIter", 1);
 

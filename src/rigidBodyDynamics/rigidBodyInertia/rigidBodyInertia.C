@@ -36,44 +36,6 @@ Foam::tensor Foam::RBD::crossMatrix(const vector& v)
 }
 
 
-Foam::scalar Foam::RBD::readPositive
-(
-    const dictionary& dict,
-    const word& key,
-    const bool allowZero
-)
-{
-    const scalar v = dict.get<scalar>(key);
-
-    if (!std::isfinite(v) || v < 0 || (!allowZero && v == 0))
-    {
-        FatalIOErrorInFunction(dict.lookup(key))
-            << "Entry " << key << ' ' << v << " in " << dict.dictName()
-            << " must be " << (allowZero ? "non-negative" : "positive") << nl
-            << exit(FatalIOError);
-    }
-
-    return v;
-}
-
-
-Foam::vector Foam::RBD::readAxis(const dictionary& dict, const word& key)
-{
-    const vector a(dict.get<vector>(key));
-    const scalar magA = mag(a);
-
-    if (!(magA > VSMALL) || !std::isfinite(magA))
-    {
-        FatalIOErrorInFunction(dict.lookup(key))
-            << "Entry " << key << ' ' << a << " in " << dict.dictName()
-            << " must be a non-zero vector" << nl
-            << exit(FatalIOError);
-    }
-
-    return a/magA;
-}
-
-
 Foam::symmTensor Foam::RBD::rigidBodyInertia::Io() const
 {
     // Parallel-axis theorem
@@ -143,17 +105,8 @@ void Foam::RBD::rigidBodyInertia::add
 }
 
 
-void Foam::RBD::rigidBodyInertia::check
-(
-    const dictionary& dict,
-    const bool massless
-) const
+void Foam::RBD::rigidBodyInertia::check(const dictionary& dict) const
 {
-    if (massless)
-    {
-        return;
-    }
-
     if (!(m_ > 0) || !std::isfinite(m_))
     {
         FatalIOErrorInFunction(dict.lookup("mass"))

@@ -69,7 +69,7 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
         {
             const dictionary& bodyDict = bodiesDict.subDict(name);
 
-            if (found(name))
+            if (hasBody(name))
             {
                 FatalIOErrorInFunction(bodyDict)
                     << "Body name " << name << " is already taken (names"
@@ -89,7 +89,7 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
             const word parentKey(merged ? "mergeWith" : "parent");
             const word parentName(bodyDict.get<word>(parentKey));
 
-            if (!found(parentName))
+            if (!hasBody(parentName))
             {
                 waiting.append(name);
                 continue;
@@ -159,21 +159,6 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
 
     checkMasses(bodiesDict);
 
-    const dictionary* restraintsDict = dict.findDict("restraints");
-    if (restraintsDict)
-    {
-        for (const entry& e : *restraintsDict)
-        {
-            if (!e.isDict())
-            {
-                FatalIOErrorInFunction(*restraintsDict)
-                    << "Entry " << e.keyword() << " of restraints is not a"
-                    << " dictionary" << nl
-                    << exit(FatalIOError);
-            }
-            addRestraint(restraint::New(e.keyword(), e.dict(), *this));
-        }
-    }
 }
 
 
@@ -372,12 +357,6 @@ Foam::label Foam::RBD::rigidBodyModel::merge
 }
 
 
-void Foam::RBD::rigidBodyModel::addRestraint(autoPtr<restraint> restraintPtr)
-{
-    restraints_.append(restraintPtr.ptr());
-}
-
-
 Foam::label Foam::RBD::rigidBodyModel::bodyID(const word& name) const
 {
     const auto iter = bodyIDs_.cfind(name);
@@ -413,6 +392,37 @@ Foam::label Foam::RBD::rigidBodyModel::bodyID
     }
 
     return *iter;
+}
+
+
+Foam::labelList Foam::RBD::rigidBodyModel::bodyDoFs(const label bodyID) const
+{
+    // From the body's own joint up through the jointBodies of its composite
+    // joint, then reversed into the order of the state
+    DynamicList<label> dofs;
+
+    label i = masterID(bodyID);
+    while (i > 0)
+    {
+        const joint& J = joints_[i];
+        for (label k = J.nDoF() - 1; k >= 0; --k)
+        {
+            dofs.append(J.qIndex() + k);
+        }
+
+        i = lambda_[i];
+        if (!isA<jointBody>(bodies_[i]))
+        {
+            break;
+        }
+    }
+
+    labelList result(dofs.size());
+    forAll(dofs, k)
+    {
+        result[k] = dofs[dofs.size() - 1 - k];
+    }
+    return result;
 }
 
 
@@ -499,21 +509,6 @@ Foam::vector Foam::RBD::rigidBodyModel::globalPoint
 {
     const spatialTransform X(X0(bodyID, ws));
     return (X.E().T() & p) + X.r();
-}
-
-
-void Foam::RBD::rigidBodyModel::applyRestraints
-(
-    const rigidBodyModelState& state,
-    const rigidBodyModelWorkspace& ws,
-    scalarField& tau,
-    Field<spatialVector>& fx
-) const
-{
-    forAll(restraints_, ri)
-    {
-        restraints_[ri].restrain(tau, fx, state, ws);
-    }
 }
 
 
@@ -606,15 +601,4 @@ void Foam::RBD::rigidBodyModel::write(Ostream& os) const
 
     os.endBlock();
 
-    if (restraints_.size())
-    {
-        os.beginBlock("restraints");
-        forAll(restraints_, ri)
-        {
-            os.beginBlock(restraints_[ri].name());
-            restraints_[ri].write(os);
-            os.endBlock();
-        }
-        os.endBlock();
-    }
 }

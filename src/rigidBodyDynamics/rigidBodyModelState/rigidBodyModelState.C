@@ -1,5 +1,4 @@
 #include "rigidBodyModelState.H"
-#include "rigidBodyModel.H"
 #include "IOstreams.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -43,14 +42,11 @@ void Foam::RBD::rigidBodyModelState::readField
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::RBD::rigidBodyModelState::rigidBodyModelState
-(
-    const rigidBodyModel& model
-)
+Foam::RBD::rigidBodyModelState::rigidBodyModelState(const label nDoF)
 :
-    q_(model.nDoF(), Zero),
-    qDot_(model.nDoF(), Zero),
-    qDdot_(model.nDoF(), Zero),
+    q_(nDoF, Zero),
+    qDot_(nDoF, Zero),
+    qDdot_(nDoF, Zero),
     t_(0),
     deltaT_(0),
     qDdotValid_(false)
@@ -59,25 +55,21 @@ Foam::RBD::rigidBodyModelState::rigidBodyModelState
 
 Foam::RBD::rigidBodyModelState::rigidBodyModelState
 (
-    const rigidBodyModel& model,
+    const label nDoF,
     const dictionary& dict
 )
 :
-    rigidBodyModelState(model)
+    rigidBodyModelState(nDoF)
 {
-    read(model, dict);
+    read(dict);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::RBD::rigidBodyModelState::read
-(
-    const rigidBodyModel& model,
-    const dictionary& dict
-)
+void Foam::RBD::rigidBodyModelState::read(const dictionary& dict)
 {
-    const label nDoF = model.nDoF();
+    const label nDoF = this->nDoF();
 
     readField(dict, "q", nDoF, q_);
     readField(dict, "qDot", nDoF, qDot_);
@@ -88,8 +80,6 @@ void Foam::RBD::rigidBodyModelState::read
     }
     dict.readIfPresent("t", t_);
     dict.readIfPresent("deltaT", deltaT_);
-
-    model.checkState(q_, dict);
 }
 
 

@@ -1,4 +1,5 @@
 #include "rigidBodyMeshMotion.H"
+#include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "pointMesh.H"
@@ -23,42 +24,18 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::dictionary Foam::rigidBodyMeshMotion::stateDict
-(
-    const polyMesh& mesh,
-    const dictionary&
-)
-{
-    IOobject io
-    (
-        "rigidBodyMotionState",
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (io.typeHeaderOk<IOdictionary>(true))
-    {
-        Info<< "rigidBodyMotion: restarting from " << io.objectPath() << endl;
-        return IOdictionary(io);
-    }
-
-    return dictionary();
-}
-
-
 void Foam::rigidBodyMeshMotion::readBodyMeshes()
 {
     const polyBoundaryMesh& pbm = mesh().boundaryMesh();
     const dictionary& bodiesDict = coeffDict().subDict("bodies");
 
-    // Body transforms of the initial state, which points0 belong to
-    RBD::rigidBodyModelState state00(model_, coeffDict());
-    RBD::rigidBodyModelWorkspace ws00(model_);
-    model_.kinematics(state00, ws00);
+    const RBD::rigidBodyModel& model = driver_.model();
+
+    // Body transforms of the dictionary's initial state, which points0
+    // belong to
+    const RBD::rigidBodyModelState state00(model.nDoF(), coeffDict());
+    RBD::rigidBodyModelWorkspace ws00(model);
+    model.kinematics(state00, ws00);
 
     DynamicList<bodyMesh> bodies;
 
@@ -73,7 +50,7 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 
         bodyMesh b;
         b.name = e.keyword();
-        b.bodyID = model_.bodyID(b.name);
+        b.bodyID = model.bodyID(b.name);
         b.patches = bd.get<wordRes>("patches");
 
         if (b.patches.empty())
@@ -98,19 +75,19 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
             b.patchSet += ids;
         }
 
-        b.di = RBD::readPositive(bd, "innerDistance", true);
-        b.dOuter = RBD::readPositive(bd, "outerDistance");
+        b.innerDistance = RBD::readNonNegative(bd, "innerDistance");
+        b.outerDistance = RBD::readPositive(bd, "outerDistance");
 
-        if (b.di >= b.dOuter)
+        if (b.innerDistance >= b.outerDistance)
         {
             FatalIOErrorInFunction(bd)
-                << "Body " << b.name << ": innerDistance " << b.di
-                << " must be less than outerDistance " << b.dOuter << nl
-                << exit(FatalIOError);
+                << "Body " << b.name << ": innerDistance " << b.innerDistance
+                << " must be less than outerDistance " << b.outerDistance
+                << nl << exit(FatalIOError);
         }
 
-        b.X00 = model_.X0(b.bodyID, ws00);
-        b.X = model_.X0(b.bodyID);
+        b.X00 = model.X0(b.bodyID, ws00);
+        b.X = driver_.motion().X0(b.bodyID);
 
         bodies.append(b);
     }
@@ -120,7 +97,7 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
         FatalIOErrorInFunction(coeffDict())
             << "No body has patches: give the bodies that move the mesh"
             << " their patches, innerDistance and outerDistance" << nl
-            << "Bodies: " << model_.bodyNames() << nl
+            << "Bodies: " << model.bodyNames() << nl
             << exit(FatalIOError);
     }
 
@@ -145,7 +122,16 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 
         forAll(d, pi)
         {
-            const scalar s = min(max((d[pi] - b.di)/(b.dOuter - b.di), 0), 1);
+            const scalar s = min
+            (
+                max
+                (
+                    (d[pi] - b.innerDistance)
+                   /(b.outerDistance - b.innerDistance),
+                    0
+                ),
+                1
+            );
             w[pi] = 1 - sqr(s)*(3 - 2*s);
             total[pi] += w[pi];
         }
@@ -172,95 +158,9 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
         Info<< "rigidBodyMotion: body " << b.name << " moves "
             << returnReduce(b.pointIDs.size(), sumOp<label>())
             << " points (patches " << b.patches << ", innerDistance "
-            << b.di << ", outerDistance " << b.dOuter << ")" << endl;
+            << b.innerDistance << ", outerDistance " << b.outerDistance
+            << ")" << endl;
     }
-}
-
-
-void Foam::rigidBodyMeshMotion::storeRows()
-{
-    if (!Pstream::master())
-    {
-        return;
-    }
-
-    const RBD::rigidBodyModelWorkspace& ws = model_.workspace();
-
-    // Restraint forces on the state now
-    tauR_ = Zero;
-    fxR_ = Zero;
-    model_.applyRestraints(model_.state(), ws, tauR_, fxR_);
-
-    rows_.setSize(bodyMeshes_.size());
-
-    forAll(bodyMeshes_, bi)
-    {
-        const label id = bodyMeshes_[bi].bodyID;
-        const label master = model_.masterID(id);
-        const spatialTransform X(model_.X0(id, ws));
-        const spatialVector v(model_.v(id, Zero, ws));
-        const spatialVector& ff = fx_[master];
-        const spatialVector& fr = fxR_[master];
-
-        scalarField& row = rows_[bi];
-        row.setSize(31);
-        label k = 0;
-        row[k++] = mesh().time().value();
-        for (const scalar s : X.r()) row[k++] = s;
-        for (const scalar s : X.E()) row[k++] = s;
-        for (const scalar s : v.l()) row[k++] = s;
-        for (const scalar s : v.w()) row[k++] = s;
-        for (const scalar s : ff.l()) row[k++] = s;
-        for (const scalar s : ff.w()) row[k++] = s;
-        for (const scalar s : fr.l()) row[k++] = s;
-        for (const scalar s : fr.w()) row[k++] = s;
-    }
-}
-
-
-void Foam::rigidBodyMeshMotion::writeRows()
-{
-    if (!Pstream::master() || rows_.empty())
-    {
-        return;
-    }
-
-    if (tables_.empty())
-    {
-        const fileName dir
-        (
-            mesh().time().globalPath()
-           /"postProcessing"/"rigidBodyMotion"/startTimeName_
-        );
-        mkDir(dir);
-
-        tables_.setSize(bodyMeshes_.size());
-        forAll(bodyMeshes_, bi)
-        {
-            tables_.set(bi, new OFstream(dir/bodyMeshes_[bi].name + ".dat"));
-            tables_[bi].precision(IOstream::defaultPrecision());
-            tables_[bi]
-                << "# Motion of body " << bodyMeshes_[bi].name << nl
-                << "# t CofR(x y z) Orientation(xx xy xz yx yy yz zx zy zz)"
-                << " v(x y z) omega(x y z) fluidForce(x y z)"
-                << " fluidMoment(x y z) restraintForce(x y z)"
-                << " restraintMoment(x y z); moments about the origin"
-                << nl;
-        }
-    }
-
-    forAll(rows_, bi)
-    {
-        OFstream& os = tables_[bi];
-        const scalarField& row = rows_[bi];
-        forAll(row, k)
-        {
-            os  << (k ? " " : "") << row[k];
-        }
-        os  << endl;
-    }
-
-    rows_.clear();
 }
 
 
@@ -273,16 +173,11 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
 )
 :
     displacementMotionSolver(mesh, dict, typeName),
-    model_(coeffDict(), stateDict(mesh, coeffDict())),
+    driver_(mesh.time(), coeffDict(), typeName, true),
     test_(coeffDict().getOrDefault<Switch>("test", false)),
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
-    curTimeIndex_(-1),
-    startTimeName_(mesh.time().timeName()),
-    tau_(model_.nDoF(), Zero),
-    fx_(model_.nBodies(), Zero),
-    tauR_(model_.nDoF(), Zero),
-    fxR_(model_.nBodies(), Zero)
+    fx_(driver_.model().nBodies(), Zero)
 {
     Info<< "rigidBodyMotion: the rigid-body dynamics project's"
         << " librigidBodyMeshMotion (not OpenFOAM's stock library)" << endl;
@@ -292,30 +187,7 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
         rhoInf_ = RBD::readPositive(coeffDict(), "rhoInf");
     }
 
-    if (coeffDict().found("ramp"))
-    {
-        ramp_ = Function1<scalar>::New("ramp", coeffDict());
-    }
-
-    if (!coeffDict().found("t"))
-    {
-        const dictionary sd(stateDict(mesh, coeffDict()));
-        if (!sd.found("t"))
-        {
-            model_.state().t() = mesh.time().value();
-            model_.newTime();
-        }
-    }
-
     readBodyMeshes();
-}
-
-
-// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
-
-Foam::rigidBodyMeshMotion::~rigidBodyMeshMotion()
-{
-    writeRows();
 }
 
 
@@ -331,6 +203,69 @@ Foam::tmp<Foam::pointField> Foam::rigidBodyMeshMotion::curPoints() const
     twoDCorrectPoints(tnewPoints.ref());
 
     return tnewPoints;
+}
+
+
+void Foam::rigidBodyMeshMotion::fluidForces()
+{
+    fx_ = Zero;
+
+    if (test_)
+    {
+        return;
+    }
+
+    if (forces_.empty())
+    {
+        if
+        (
+            rhoName_ != "rhoInf"
+         && !mesh().foundObject<volScalarField>(rhoName_)
+        )
+        {
+            FatalIOErrorInFunction(coeffDict().lookup("rho"))
+                << "Entry rho " << rhoName_ << ": no such density field;"
+                << " give the name of one or, for a fluid of constant"
+                << " density, rho rhoInf with rhoInf" << nl
+                << "Fields: "
+                << mesh().sortedNames<volScalarField>() << nl
+                << exit(FatalIOError);
+        }
+
+        forces_.setSize(bodyMeshes_.size());
+        forAll(bodyMeshes_, bi)
+        {
+            dictionary forcesDict;
+            forcesDict.add("type", functionObjects::forces::typeName);
+            forcesDict.add("patches", bodyMeshes_[bi].patches);
+            forcesDict.add("rho", rhoName_);
+            forcesDict.add("rhoInf", rhoInf_);
+            forcesDict.add("CofR", vector::zero);
+            forcesDict.add("log", false);
+
+            forces_.set
+            (
+                bi,
+                new functionObjects::forces
+                (
+                    "rigidBodyMotion:" + bodyMeshes_[bi].name,
+                    mesh(),
+                    forcesDict
+                )
+            );
+        }
+    }
+
+    // Scaled as gravity is, by the ramp
+    const scalar ramp = driver_.motion().ramp(mesh().time().value());
+
+    forAll(bodyMeshes_, bi)
+    {
+        functionObjects::forces& f = forces_[bi];
+        f.calcForcesMoment();
+        fx_[driver_.model().masterID(bodyMeshes_[bi].bodyID)] +=
+            ramp*spatialVector(f.momentEff(), f.forceEff());
+    }
 }
 
 
@@ -374,8 +309,6 @@ void Foam::rigidBodyMeshMotion::displace()
 
 void Foam::rigidBodyMeshMotion::solve()
 {
-    const Time& t = mesh().time();
-
     if (mesh().nPoints() != points0().size())
     {
         FatalErrorInFunction
@@ -385,127 +318,36 @@ void Foam::rigidBodyMeshMotion::solve()
             << exit(FatalError);
     }
 
-    // The start of a new time step
-    if (curTimeIndex_ != t.timeIndex())
-    {
-        writeRows();
-        model_.newTime();
-        curTimeIndex_ = t.timeIndex();
-    }
+    fluidForces();
 
-    const scalar ramp = ramp_.valid() ? ramp_->value(t.value()) : 1;
-
-    if (t.foundObject<uniformDimensionedVectorField>("g"))
-    {
-        model_.setG
-        (
-            ramp*t.lookupObject<uniformDimensionedVectorField>("g").value()
-        );
-    }
-
-    // Fluid forces and moments about the origin, summed over processors
-    fx_ = Zero;
-    if (!test_)
-    {
-        if (forces_.empty())
-        {
-            if
-            (
-                rhoName_ != "rhoInf"
-             && !mesh().foundObject<volScalarField>(rhoName_)
-            )
-            {
-                FatalIOErrorInFunction(coeffDict().lookup("rho"))
-                    << "Entry rho " << rhoName_ << ": no such density field;"
-                    << " give the name of one or, for a fluid of constant"
-                    << " density, rho rhoInf with rhoInf" << nl
-                    << "Fields: "
-                    << mesh().sortedNames<volScalarField>() << nl
-                    << exit(FatalIOError);
-            }
-
-            forces_.setSize(bodyMeshes_.size());
-            forAll(bodyMeshes_, bi)
-            {
-                dictionary forcesDict;
-                forcesDict.add("type", functionObjects::forces::typeName);
-                forcesDict.add("patches", bodyMeshes_[bi].patches);
-                forcesDict.add("rho", rhoName_);
-                forcesDict.add("rhoInf", rhoInf_);
-                forcesDict.add("CofR", vector::zero);
-                forcesDict.add("log", false);
-
-                forces_.set
-                (
-                    bi,
-                    new functionObjects::forces
-                    (
-                        "rigidBodyMotion:" + bodyMeshes_[bi].name,
-                        mesh(),
-                        forcesDict
-                    )
-                );
-            }
-        }
-
-        forAll(bodyMeshes_, bi)
-        {
-            functionObjects::forces& f = forces_[bi];
-            f.calcForcesMoment();
-            fx_[model_.masterID(bodyMeshes_[bi].bodyID)] +=
-                ramp*spatialVector(f.momentEff(), f.forceEff());
-        }
-    }
-
-    // Solve on the master, broadcast the state
-    if (Pstream::master())
-    {
-        for (label iter = 0; iter < model_.nIter(); ++iter)
-        {
-            model_.solve(t.value(), t.deltaTValue(), tau_, fx_);
-        }
-    }
-    Pstream::scatter(model_.state());
+    driver_.solve(fx_);
 
     forAll(bodyMeshes_, bi)
     {
-        bodyMeshes_[bi].X = model_.X0(bodyMeshes_[bi].bodyID);
+        bodyMeshes_[bi].X = driver_.motion().X0(bodyMeshes_[bi].bodyID);
     }
 
     displace();
 
-    if (model_.report())
+    if (driver_.report())
     {
         forAll(bodyMeshes_, bi)
         {
-            model_.status(bodyMeshes_[bi].bodyID);
+            driver_.status(bodyMeshes_[bi].bodyID);
         }
     }
-
-    storeRows();
 }
 
 
 bool Foam::rigidBodyMeshMotion::writeObject
 (
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
 ) const
 {
-    const Time& t = mesh().time();
-
-    const fileName dir(t.timePath()/"uniform");
-    mkDir(dir);
-
-    OFstream os(dir/"rigidBodyMotionState");
-    IOobject io("rigidBodyMotionState", t.timeName(), "uniform", mesh());
-    io.writeHeader(os, IOdictionary::typeName);
-    model_.state().write(os);
-    IOobject::writeEndDivider(os);
-
-    return os.good();
+    return driver_.writeState();
 }
 
 
@@ -513,8 +355,7 @@ bool Foam::rigidBodyMeshMotion::read()
 {
     if (displacementMotionSolver::read())
     {
-        model_.read(coeffDict());
-        return true;
+        return driver_.read(coeffDict());
     }
 
     return false;

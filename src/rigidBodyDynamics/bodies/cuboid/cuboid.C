@@ -1,4 +1,5 @@
 #include "cuboid.H"
+#include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam

@@ -33,7 +33,7 @@ Foam::RBD::rigidBody::rigidBody(const word& name, const dictionary& dict)
     ),
     name_(name)
 {
-    check(dict, false);
+    check(dict);
 }
 
 

@@ -1,4 +1,5 @@
 #include "sphere.H"
+#include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam

@@ -1,4 +1,5 @@
 #include "Pa.H"
+#include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam

@@ -1,4 +1,5 @@
 #include "Ra.H"
+#include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam

@@ -1,4 +1,5 @@
 #include "linearAxialAngularSpring.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -71,8 +72,8 @@ bool Foam::RBD::restraints::linearAxialAngularSpring::read
     perp_ = trial - (trial & axis_)*axis_;
     perp_ /= mag(perp_);
 
-    stiffness_ = readPositive(dict, "stiffness", true);
-    damping_ = readPositive(dict, "damping", true);
+    stiffness_ = readNonNegative(dict, "stiffness");
+    damping_ = readNonNegative(dict, "damping");
 
     return true;
 }

@@ -1,4 +1,5 @@
 #include "linearDamper.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -48,7 +49,7 @@ void Foam::RBD::restraints::linearDamper::restrain
 bool Foam::RBD::restraints::linearDamper::read(const dictionary& dict)
 {
     restraint::read(dict);
-    coeff_ = readPositive(dict, "coeff", true);
+    coeff_ = readNonNegative(dict, "coeff");
     return true;
 }
 

@@ -1,4 +1,5 @@
 #include "linearSpring.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -58,9 +59,9 @@ bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
 
     anchor_ = dict.get<vector>("anchor");
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
-    stiffness_ = readPositive(dict, "stiffness", true);
-    damping_ = readPositive(dict, "damping", true);
-    restLength_ = readPositive(dict, "restLength", true);
+    stiffness_ = readNonNegative(dict, "stiffness");
+    damping_ = readNonNegative(dict, "damping");
+    restLength_ = readNonNegative(dict, "restLength");
 
     return true;
 }

@@ -1,4 +1,5 @@
 #include "prescribedRotation.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 

@@ -1,4 +1,5 @@
 #include "softWall.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
@@ -65,7 +66,7 @@ bool Foam::RBD::restraints::softWall::read(const dictionary& dict)
     wallNormal_ = readAxis(dict, "wallNormal");
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
     C_ = readPositive(dict, "C");
-    psi_ = readPositive(dict, "psi", true);
+    psi_ = readNonNegative(dict, "psi");
 
     if (psi_ >= 1)
     {

@@ -1,4 +1,5 @@
 #include "sphericalAngularDamper.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -46,7 +47,7 @@ bool Foam::RBD::restraints::sphericalAngularDamper::read
 )
 {
     restraint::read(dict);
-    coeff_ = readPositive(dict, "coeff", true);
+    coeff_ = readNonNegative(dict, "coeff");
     return true;
 }
 

@@ -16,11 +16,11 @@ namespace rigidBodySolvers
 
 Foam::RBD::rigidBodySolvers::CrankNicolson::CrankNicolson
 (
-    rigidBodyMotion& body,
+    const rigidBodyModel& model,
     const dictionary& dict
 )
 :
-    rigidBodySolver(body),
+    rigidBodySolver(model),
     aoc_(dict.getOrDefault<scalar>("aoc", 0.5)),
     voc_(dict.getOrDefault<scalar>("voc", 0.5))
 {
@@ -38,13 +38,17 @@ Foam::RBD::rigidBodySolvers::CrankNicolson::CrankNicolson
 }
 
 
-void Foam::RBD::rigidBodySolvers::CrankNicolson::update()
+void Foam::RBD::rigidBodySolvers::CrankNicolson::update
+(
+    const rigidBodyModelState& state0,
+    rigidBodyModelState& state
+)
 {
-    const scalar dt = deltaT();
-    const scalarField& qDot0 = state0().qDot();
-    const scalarField& qDdot0 = state0().qDdot();
-    const scalarField& qDdot = state().qDdot();
-    scalarField& qDot = state().qDot();
+    const scalar dt = state.deltaT();
+    const scalarField& qDot0 = state0.qDot();
+    const scalarField& qDdot0 = state0.qDdot();
+    const scalarField& qDdot = state.qDdot();
+    scalarField& qDot = state.qDot();
 
     forAll(qDot, i)
     {
@@ -52,17 +56,19 @@ void Foam::RBD::rigidBodySolvers::CrankNicolson::update()
         dq_[i] = dt*((1 - voc_)*qDot0[i] + voc_*qDot[i]);
     }
 
-    integratePosition();
+    integratePosition(state0, state);
 }
 
 
 void Foam::RBD::rigidBodySolvers::CrankNicolson::solve
 (
-    const scalarField& tau,
-    const Field<spatialVector>& fx
+    const rigidBodyModelState& state0,
+    rigidBodyModelState& state,
+    accelerationFunction& f,
+    const bool firstSolve
 )
 {
-    update();
-    forwardDynamics(tau, fx);
-    update();
+    update(state0, state);
+    f.accelerations(state, firstSolve);
+    update(state0, state);
 }

@@ -16,11 +16,11 @@ namespace rigidBodySolvers
 
 Foam::RBD::rigidBodySolvers::Newmark::Newmark
 (
-    rigidBodyMotion& body,
+    const rigidBodyModel& model,
     const dictionary& dict
 )
 :
-    rigidBodySolver(body),
+    rigidBodySolver(model),
     gamma_(dict.getOrDefault<scalar>("gamma", 0.5)),
     beta_(dict.getOrDefault<scalar>("beta", 0.25))
 {
@@ -48,13 +48,17 @@ Foam::RBD::rigidBodySolvers::Newmark::Newmark
 }
 
 
-void Foam::RBD::rigidBodySolvers::Newmark::update()
+void Foam::RBD::rigidBodySolvers::Newmark::update
+(
+    const rigidBodyModelState& state0,
+    rigidBodyModelState& state
+)
 {
-    const scalar dt = deltaT();
-    const scalarField& qDot0 = state0().qDot();
-    const scalarField& qDdot0 = state0().qDdot();
-    const scalarField& qDdot = state().qDdot();
-    scalarField& qDot = state().qDot();
+    const scalar dt = state.deltaT();
+    const scalarField& qDot0 = state0.qDot();
+    const scalarField& qDdot0 = state0.qDdot();
+    const scalarField& qDdot = state.qDdot();
+    scalarField& qDot = state.qDot();
 
     forAll(qDot, i)
     {
@@ -64,17 +68,19 @@ void Foam::RBD::rigidBodySolvers::Newmark::update()
           + sqr(dt)*((0.5 - beta_)*qDdot0[i] + beta_*qDdot[i]);
     }
 
-    integratePosition();
+    integratePosition(state0, state);
 }
 
 
 void Foam::RBD::rigidBodySolvers::Newmark::solve
 (
-    const scalarField& tau,
-    const Field<spatialVector>& fx
+    const rigidBodyModelState& state0,
+    rigidBodyModelState& state,
+    accelerationFunction& f,
+    const bool firstSolve
 )
 {
-    update();
-    forwardDynamics(tau, fx);
-    update();
+    update(state0, state);
+    f.accelerations(state, firstSolve);
+    update(state0, state);
 }

@@ -1,5 +1,7 @@
 #include "rigidBodySolver.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
 namespace Foam
 {
 namespace RBD
@@ -10,16 +12,20 @@ namespace RBD
 }
 
 
-Foam::RBD::rigidBodySolver::rigidBodySolver(rigidBodyMotion& body)
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodySolver::rigidBodySolver(const rigidBodyModel& model)
 :
-    body_(body),
-    dq_(body.nDoF(), Zero)
+    model_(model),
+    dq_(model.nDoF(), Zero)
 {}
 
 
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
 Foam::autoPtr<Foam::RBD::rigidBodySolver> Foam::RBD::rigidBodySolver::New
 (
-    rigidBodyMotion& body,
+    const rigidBodyModel& model,
     const dictionary& dict
 )
 {
@@ -38,5 +44,5 @@ Foam::autoPtr<Foam::RBD::rigidBodySolver> Foam::RBD::rigidBodySolver::New
         ) << exit(FatalIOError);
     }
 
-    return cstrIter()(body, dict);
+    return cstrIter()(model, dict);
 }

@@ -16,37 +16,26 @@ namespace rigidBodySolvers
 
 Foam::RBD::rigidBodySolvers::symplectic::symplectic
 (
-    rigidBodyMotion& body,
+    const rigidBodyModel& model,
     const dictionary&
 )
 :
-    rigidBodySolver(body),
-    qDotHalf_(body.nDoF(), Zero)
+    rigidBodySolver(model),
+    qDotHalf_(model.nDoF(), Zero)
 {}
-
-
-void Foam::RBD::rigidBodySolvers::symplectic::update()
-{
-    const scalar dt = deltaT();
-    const scalarField& qDdot = state().qDdot();
-    scalarField& qDot = state().qDot();
-
-    forAll(qDot, i)
-    {
-        qDot[i] = qDotHalf_[i] + 0.5*dt*qDdot[i];
-    }
-}
 
 
 void Foam::RBD::rigidBodySolvers::symplectic::solve
 (
-    const scalarField& tau,
-    const Field<spatialVector>& fx
+    const rigidBodyModelState& state0,
+    rigidBodyModelState& state,
+    accelerationFunction& f,
+    const bool firstSolve
 )
 {
-    const scalar dt = deltaT();
-    const scalarField& qDot0 = state0().qDot();
-    const scalarField& qDdot0 = state0().qDdot();
+    const scalar dt = state.deltaT();
+    const scalarField& qDot0 = state0.qDot();
+    const scalarField& qDdot0 = state0.qDdot();
 
     // Kick and drift from the start of the step
     forAll(qDotHalf_, i)
@@ -54,17 +43,22 @@ void Foam::RBD::rigidBodySolvers::symplectic::solve
         qDotHalf_[i] = qDot0[i] + 0.5*dt*qDdot0[i];
         dq_[i] = dt*qDotHalf_[i];
     }
-    integratePosition();
+    integratePosition(state0, state);
 
     // Velocities for the accelerations: the half step's at first, then the
     // latest end-of-step estimate
-    if (body_.iteration() == 0)
+    if (firstSolve)
     {
-        state().qDot() = qDotHalf_;
+        state.qDot() = qDotHalf_;
     }
 
-    forwardDynamics(tau, fx);
+    f.accelerations(state, firstSolve);
 
     // Kick
-    update();
+    const scalarField& qDdot = state.qDdot();
+    scalarField& qDot = state.qDot();
+    forAll(qDot, i)
+    {
+        qDot[i] = qDotHalf_[i] + 0.5*dt*qDdot[i];
+    }
 }

@@ -1,0 +1,65 @@
+#include "Aitken.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace couplingSchemes
+{
+    defineTypeNameAndDebug(Aitken, 0);
+    addToRunTimeSelectionTable(couplingScheme, Aitken, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::couplingSchemes::Aitken::Aitken
+(
+    const dictionary& dict,
+    const label nDoF
+)
+:
+    couplingScheme(dict),
+    omega_(relaxation_),
+    rPrev_(nDoF, Zero)
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::RBD::couplingSchemes::Aitken::correct
+(
+    const scalarField& aGiven,
+    scalarField& a,
+    const bool firstSolve
+)
+{
+    scalar rdr = 0, dr2 = 0;
+    forAll(a, i)
+    {
+        const scalar r = a[i] - aGiven[i];
+        const scalar dr = r - rPrev_[i];
+        rdr += rPrev_[i]*dr;
+        dr2 += sqr(dr);
+        rPrev_[i] = r;
+    }
+
+    if (!firstSolve && dr2 > VSMALL)
+    {
+        omega_ = min(max(-omega_*rdr/dr2, scalar(0.01)), scalar(1));
+    }
+    else
+    {
+        omega_ = min(omega_, relaxation_);
+    }
+
+    forAll(a, i)
+    {
+        a[i] = omega_*a[i] + (1 - omega_)*aGiven[i];
+    }
+}

@@ -1,0 +1,46 @@
+#include "constant.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace couplingSchemes
+{
+    defineTypeNameAndDebug(constant, 0);
+    addToRunTimeSelectionTable(couplingScheme, constant, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::couplingSchemes::constant::constant
+(
+    const dictionary& dict,
+    const label
+)
+:
+    couplingScheme(dict)
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::RBD::couplingSchemes::constant::correct
+(
+    const scalarField& aGiven,
+    scalarField& a,
+    const bool
+)
+{
+    const scalar omega = relaxation_;
+
+    forAll(a, i)
+    {
+        a[i] = omega*a[i] + (1 - omega)*aGiven[i];
+    }
+}

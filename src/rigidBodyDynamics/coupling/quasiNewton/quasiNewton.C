@@ -1,0 +1,114 @@
+#include "quasiNewton.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace couplingSchemes
+{
+    defineTypeNameAndDebug(quasiNewton, 0);
+    addToRunTimeSelectionTable(couplingScheme, quasiNewton, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::couplingSchemes::quasiNewton::quasiNewton
+(
+    const dictionary& dict,
+    const label nDoF
+)
+:
+    couplingScheme(dict),
+    Jinv_(nDoF, Zero),
+    aGivenPrev_(nDoF, Zero),
+    rPrev_(nDoF, Zero),
+    da_(nDoF, Zero),
+    dr_(nDoF, Zero),
+    JinvDr_(nDoF, Zero)
+{
+    resetJacobian();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::couplingSchemes::quasiNewton::resetJacobian()
+{
+    Jinv_ = Zero;
+    for (label i = 0; i < Jinv_.m(); ++i)
+    {
+        Jinv_(i, i) = -relaxation_;
+    }
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::RBD::couplingSchemes::quasiNewton::correct
+(
+    const scalarField& aGiven,
+    scalarField& a,
+    const bool firstSolve
+)
+{
+    const label n = Jinv_.m();
+
+    // The residual, and the changes since the previous solve
+    scalar dr2 = 0;
+    forAll(a, i)
+    {
+        const scalar r = a[i] - aGiven[i];
+        da_[i] = aGiven[i] - aGivenPrev_[i];
+        dr_[i] = r - rPrev_[i];
+        dr2 += sqr(dr_[i]);
+        aGivenPrev_[i] = aGiven[i];
+        rPrev_[i] = r;
+    }
+
+    // Broyden's inverse update from the previous solve of the step
+    if (!firstSolve && dr2 > VSMALL)
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            JinvDr_[i] = 0;
+            for (label j = 0; j < n; ++j)
+            {
+                JinvDr_[i] += Jinv_(i, j)*dr_[j];
+            }
+        }
+
+        bool valid = true;
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar c = (da_[i] - JinvDr_[i])/dr2;
+            for (label j = 0; j < n; ++j)
+            {
+                Jinv_(i, j) += c*dr_[j];
+            }
+            // Each degree of freedom is relaxed by a factor in (0, 2)
+            valid = valid && -Jinv_(i, i) > 0.005 && -Jinv_(i, i) < 2;
+        }
+
+        if (!valid)
+        {
+            resetJacobian();
+        }
+    }
+
+    // a = aGiven - Jinv r
+    forAll(a, i)
+    {
+        scalar Jr = 0;
+        for (label j = 0; j < n; ++j)
+        {
+            Jr += Jinv_(i, j)*rPrev_[j];
+        }
+        a[i] = aGiven[i] - Jr;
+    }
+}

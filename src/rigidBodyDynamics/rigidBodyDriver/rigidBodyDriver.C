@@ -1,0 +1,316 @@
+#include "rigidBodyDriver.H"
+#include "IOdictionary.H"
+#include "uniformDimensionedFields.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::dictionary Foam::RBD::rigidBodyDriver::withGravity
+(
+    const Time& runTime,
+    const dictionary& coeffs
+)
+{
+    dictionary dict(coeffs);
+
+    if (!dict.found("g"))
+    {
+        IOobject gIO
+        (
+            "g",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+
+        if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            dict.add("g", uniformDimensionedVectorField(gIO).value());
+        }
+    }
+
+    return dict;
+}
+
+
+Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
+(
+    const Time& runTime
+)
+{
+    IOobject io
+    (
+        "rigidBodyMotionState",
+        runTime.timeName(),
+        "uniform",
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        Info<< "Restarting from " << io.objectPath() << nl << endl;
+        return IOdictionary(io);
+    }
+
+    return dictionary();
+}
+
+
+Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
+{
+    // t, CofR, orientation, v, omega; q and qDot; external force and moment;
+    // restraint force and moment; kinetic and potential energy
+    return
+        1 + 3 + 9 + 3 + 3
+      + 2*dofs_[bi].size()
+      + (externalForces_ ? 6 : 0)
+      + 6
+      + 2;
+}
+
+
+void Foam::RBD::rigidBodyDriver::storeRows()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const rigidBodyModel& model = motion_.model();
+    const rigidBodyModelWorkspace& ws = motion_.workspace();
+    const rigidBodyModelState& state = motion_.state();
+
+    tauR_ = Zero;
+    fxR_ = Zero;
+    motion_.restraintForces(tauR_, fxR_);
+
+    forAll(bodyIDs_, bi)
+    {
+        const label id = bodyIDs_[bi];
+        const label master = model.masterID(id);
+        const rigidBody& body = model.bodies()[master];
+        const spatialTransform X(model.X0(id, ws));
+        const spatialVector v(model.v(id, Zero, ws));
+
+        scalarField& row = rows_[bi];
+        label k = 0;
+        row[k++] = time_.value();
+        for (const scalar s : X.r()) row[k++] = s;
+        for (const scalar s : X.E()) row[k++] = s;
+        for (const scalar s : v.l()) row[k++] = s;
+        for (const scalar s : v.w()) row[k++] = s;
+        for (const label i : dofs_[bi]) row[k++] = state.q()[i];
+        for (const label i : dofs_[bi]) row[k++] = state.qDot()[i];
+        if (externalForces_)
+        {
+            for (const scalar s : fx_[master].l()) row[k++] = s;
+            for (const scalar s : fx_[master].w()) row[k++] = s;
+        }
+        for (const scalar s : fxR_[master].l()) row[k++] = s;
+        for (const scalar s : fxR_[master].w()) row[k++] = s;
+        row[k++] = body.kineticEnergy(ws.v[master]);
+        row[k++] = -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
+    }
+
+    rowsPending_ = true;
+}
+
+
+void Foam::RBD::rigidBodyDriver::writeRows()
+{
+    if (!Pstream::master() || !rowsPending_)
+    {
+        return;
+    }
+
+    if (tables_.empty())
+    {
+        const fileName dir
+        (
+            time_.globalPath()/"postProcessing"/name_/startTimeName_
+        );
+        mkDir(dir);
+
+        tables_.setSize(names_.size());
+        forAll(names_, bi)
+        {
+            tables_.set(bi, new OFstream(dir/names_[bi] + ".dat"));
+            OFstream& os = tables_[bi];
+            os.precision(IOstream::defaultPrecision());
+            os  << "# Motion of body " << names_[bi] << ": SI units; forces"
+                << " in global axes, moments about the global origin" << nl
+                << "# t CofR(x y z) Orientation(xx xy xz yx yy yz zx zy zz)"
+                << " v(x y z) omega(x y z)";
+            for (const label i : dofs_[bi]) os << " q" << i;
+            for (const label i : dofs_[bi]) os << " qDot" << i;
+            if (externalForces_)
+            {
+                os << " fluidForce(x y z) fluidMoment(x y z)";
+            }
+            os  << " restraintForce(x y z) restraintMoment(x y z)"
+                << " kineticEnergy potentialEnergy" << nl;
+        }
+    }
+
+    forAll(rows_, bi)
+    {
+        OFstream& os = tables_[bi];
+        const scalarField& row = rows_[bi];
+        forAll(row, k)
+        {
+            os  << (k ? " " : "") << row[k];
+        }
+        os  << nl;
+
+        // On disk at least at every write time
+        if (time_.writeTime())
+        {
+            os.flush();
+        }
+    }
+
+    rowsPending_ = false;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyDriver::rigidBodyDriver
+(
+    const Time& runTime,
+    const dictionary& coeffs,
+    const dictionary& stateDict,
+    const word& name,
+    const bool externalForces
+)
+:
+    time_(runTime),
+    name_(name),
+    motion_(withGravity(runTime, coeffs), stateDict),
+    report_(coeffs.getOrDefault<Switch>("report", false)),
+    externalForces_(externalForces),
+    curTimeIndex_(-1),
+    names_(coeffs.subDict("bodies").toc()),
+    bodyIDs_(names_.size()),
+    dofs_(names_.size()),
+    startTimeName_(runTime.timeName()),
+    rows_(names_.size()),
+    rowsPending_(false),
+    tau_(motion_.model().nDoF(), Zero),
+    fx_(motion_.model().nBodies(), Zero),
+    tauR_(motion_.model().nDoF(), Zero),
+    fxR_(motion_.model().nBodies(), Zero)
+{
+    forAll(names_, bi)
+    {
+        bodyIDs_[bi] = model().bodyID(names_[bi]);
+        dofs_[bi] = model().bodyDoFs(bodyIDs_[bi]);
+        rows_[bi].setSize(nColumns(bi), Zero);
+    }
+
+    // A state that does not say when it is starts at the case's start time
+    if (!coeffs.found("t") && !stateDict.found("t"))
+    {
+        motion_.state().t() = runTime.value();
+        motion_.newTime();
+    }
+
+    // A row for the start, where its forces are known (no external forces:
+    // a fluid's are known only once the first solve has computed them)
+    if (!externalForces_)
+    {
+        storeRows();
+    }
+}
+
+
+Foam::RBD::rigidBodyDriver::rigidBodyDriver
+(
+    const Time& runTime,
+    const dictionary& coeffs,
+    const word& name,
+    const bool externalForces
+)
+:
+    rigidBodyDriver
+    (
+        runTime,
+        coeffs,
+        restartState(runTime),
+        name,
+        externalForces
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyDriver::~rigidBodyDriver()
+{
+    writeRows();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
+{
+    // The start of a new time step
+    if (curTimeIndex_ != time_.timeIndex())
+    {
+        writeRows();
+        motion_.newTime();
+        curTimeIndex_ = time_.timeIndex();
+    }
+
+    fx_ = fx;
+
+    if (Pstream::master())
+    {
+        motion_.solve(time_.value(), time_.deltaTValue(), tau_, fx_);
+    }
+    Pstream::scatter(motion_.state());
+
+    storeRows();
+}
+
+
+void Foam::RBD::rigidBodyDriver::status(const label bodyID)
+{
+    const spatialTransform CofR(motion_.X0(bodyID));
+    const spatialVector vCofR(motion_.v(bodyID, Zero));
+
+    Info<< "Rigid-body motion of the " << model().name(bodyID) << nl
+        << "    Centre of rotation: " << CofR.r() << nl
+        << "    Orientation: " << CofR.E() << nl
+        << "    Linear velocity: " << vCofR.l() << nl
+        << "    Angular velocity: " << vCofR.w()
+        << endl;
+}
+
+
+bool Foam::RBD::rigidBodyDriver::writeState() const
+{
+    const fileName dir(time_.timePath()/"uniform");
+    mkDir(dir);
+
+    OFstream os(dir/"rigidBodyMotionState");
+    IOobject io("rigidBodyMotionState", time_.timeName(), "uniform", time_);
+    io.writeHeader(os, IOdictionary::typeName);
+    motion_.state().write(os);
+    IOobject::writeEndDivider(os);
+
+    return os.good();
+}
+
+
+bool Foam::RBD::rigidBodyDriver::read(const dictionary& coeffs)
+{
+    report_ = coeffs.getOrDefault<Switch>("report", false);
+    return motion_.read(coeffs);
+}
