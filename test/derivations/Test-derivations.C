@@ -537,7 +537,8 @@ void checkModelJoint
     }
 
     RBD::rigidBodyModelWorkspace ws0(model), wsm(model), wsp(model);
-    RBD::rigidBodyModelState s0(model), sm(model), sp(model);
+    const label nDoF = model.nDoF();
+    RBD::rigidBodyModelState s0(nDoF), sm(nDoF), sp(nDoF);
 
     for (label iq = 0; iq < nQ; ++iq)
     {
@@ -702,7 +703,7 @@ void checkAcrobot(Random& rnd)
 
     const RBD::rigidBodyModel model(dictFromString(text));
     RBD::rigidBodyModelWorkspace ws(model);
-    RBD::rigidBodyModelState state(model);
+    RBD::rigidBodyModelState state(model.nDoF());
 
     scalar errM = 0, errV = 0, errA = 0;
     const label nStates = 12;
@@ -936,7 +937,7 @@ void checkEnergyBalance
     const label nDoF = model.nDoF();
     const label nb = model.nBodies();
     RBD::rigidBodyModelWorkspace ws(model);
-    RBD::rigidBodyModelState state(model), sh(model);
+    RBD::rigidBodyModelState state(model.nDoF()), sh(model.nDoF());
 
     const scalar h = 2.5e-5;
     scalar worst = 0, worstP = 0, minScale = GREAT;
