@@ -415,7 +415,12 @@ void torsionSpring()
 //  force of partitioned coupling, -Ma times the latest acceleration),
 //  solved with nIter solves per step: error at 1 s against the exact
 //  oscillation of mass m + Ma, or GREAT if the iterations diverge
-scalar addedMassError(const std::string& relaxation, const scalar Ma)
+scalar addedMassError
+(
+    const std::string& relaxation,
+    const scalar Ma,
+    const label nOuter = 20
+)
 {
     const scalar m = 1, k = 100, x0 = 0.1;
 
@@ -439,7 +444,7 @@ scalar addedMassError(const std::string& relaxation, const scalar Ma)
     for (label step = 0; step < 1000; ++step)
     {
         mo.newTime();
-        for (label iter = 0; iter < 20; ++iter)
+        for (label iter = 0; iter < nOuter; ++iter)
         {
             fx[b] = spatialVector(0, 0, 0, 0, 0, -Ma*mo.state().qDdot()[0]);
             mo.solve((step + 1)*dt, dt, tau, fx);
@@ -460,9 +465,34 @@ void addedMass()
     // Ma/m = 3: plain iteration diverges (factor -3), Aitken converges
     checkRange
     (
-        addedMassError("accelerationRelaxation 1;", 3), 1, GREAT,
+        addedMassError
+        (
+            "accelerationRelaxation 1; accelerationRelaxationType constant;", 3
+        ),
+        1, GREAT,
         "added mass 3 m, constant relaxation 1: the iterations diverge"
     );
+
+    // addedMass: Newton's step with the added mass learnt from the solves,
+    // for any ratio, in the three outer correctors of a typical case (the
+    // force here answers the acceleration exactly linearly, so the learnt
+    // added mass is exact)
+    for (const scalar Ma : {0.2, 3.0, 1e3, 1e4})
+    {
+        checkAbs
+        (
+            addedMassError
+            (
+                "accelerationRelaxation 0.7;"
+                " accelerationRelaxationType addedMass;",
+                Ma,
+                3
+            ),
+            0, 1e-5,
+            "added mass " + std::to_string(Ma) + " m, addedMass coupling,"
+            " 3 solves a step: oscillation of mass m + Ma"
+        );
+    }
     checkAbs
     (
         addedMassError

@@ -3,6 +3,17 @@
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+    defineTypeNameAndDebug(rigidBodyDriver, 0);
+}
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::dictionary Foam::RBD::rigidBodyDriver::withGravity
@@ -178,6 +189,28 @@ void Foam::RBD::rigidBodyDriver::writeRows()
 }
 
 
+void Foam::RBD::rigidBodyDriver::reportCoupling() const
+{
+    if (!externalForces_ || curTimeIndex_ < 0)
+    {
+        return;
+    }
+
+    const scalar r = motion_.coupling().residual();
+
+    Info<< "rigidBodyMotion: coupling of the step to t = "
+        << motion_.state().t() << ": " << motion_.nSolves() << " solves, "
+        << motion_.coupling().type() << ", residual " << r;
+
+    if (r > couplingTolerance_)
+    {
+        Info<< ": NOT CONVERGED (couplingTolerance " << couplingTolerance_
+            << "; more outer correctors would converge it)";
+    }
+    Info<< endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::rigidBodyDriver::rigidBodyDriver
@@ -195,6 +228,10 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     report_(coeffs.getOrDefault<Switch>("report", false)),
     externalForces_(externalForces),
     curTimeIndex_(-1),
+    couplingTolerance_
+    (
+        coeffs.getOrDefault<scalar>("couplingTolerance", 1e-3)
+    ),
     names_(coeffs.subDict("bodies").toc()),
     bodyIDs_(names_.size()),
     dofs_(names_.size()),
@@ -252,6 +289,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 
 Foam::RBD::rigidBodyDriver::~rigidBodyDriver()
 {
+    reportCoupling();
     writeRows();
 }
 
@@ -263,6 +301,7 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     // The start of a new time step
     if (curTimeIndex_ != time_.timeIndex())
     {
+        reportCoupling();
         writeRows();
         motion_.newTime();
         curTimeIndex_ = time_.timeIndex();
@@ -273,6 +312,13 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     if (Pstream::master())
     {
         motion_.solve(time_.value(), time_.deltaTValue(), tau_, fx_);
+
+        if (debug)
+        {
+            Info<< "rigidBodyMotion: solve " << motion_.nSolves()
+                << ", coupling residual " << motion_.coupling().residual()
+                << ", qDdot " << motion_.state().qDdot() << endl;
+        }
     }
     Pstream::scatter(motion_.state());
 

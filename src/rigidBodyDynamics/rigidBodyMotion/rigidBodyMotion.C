@@ -13,7 +13,7 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
             << exit(FatalIOError);
     }
 
-    coupling_ = couplingScheme::New(dict, model_.nDoF());
+    coupling_ = couplingScheme::New(dict, model_);
     solver_ = rigidBodySolver::New(model_, dict.subDict("solver"));
 
     ramp_.clear();
@@ -99,7 +99,7 @@ void Foam::RBD::rigidBodyMotion::accelerations
 
     evaluate(state);
 
-    coupling_->relax(qDdotGiven_, state.qDdot(), firstSolve);
+    coupling_->relax(state, qDdotGiven_, state.qDdot(), firstSolve);
 }
 
 
@@ -107,7 +107,32 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
 {
     if (!state0_.qDdotValid())
     {
+        // The accelerations the forces give, and the share of the external
+        // forces in them (the algorithm is linear in the forces)
+        forAll(qDdotGiven_, i)
+        {
+            qDdotGiven_[i] = state0_.qDdot()[i];
+        }
         evaluate(state0_);
+
+        forAll(fxTotal_, i)
+        {
+            fxTotal_[i] -= fxGiven_[i];
+        }
+        model_.articulatedBodyDynamics(tauTotal_, fxTotal_, ws_, qDdotExternal_);
+        forAll(qDdotExternal_, i)
+        {
+            qDdotExternal_[i] = state0_.qDdot()[i] - qDdotExternal_[i];
+        }
+
+        coupling_->relaxStart
+        (
+            state0_,
+            qDdotGiven_,
+            qDdotExternal_,
+            state0_.qDdot()
+        );
+
         state0_.setQDdotValid(true);
         state_.qDdot() = state0_.qDdot();
         state_.setQDdotValid(true);
@@ -115,7 +140,14 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
     }
     else if (qDdot0Provisional_)
     {
-        evaluate(state0_);
+        if (externalForces_ && coupling_->relaxesStart())
+        {
+            state0_.qDdot() = state_.qDdot();
+        }
+        else
+        {
+            evaluate(state0_);
+        }
     }
 }
 
@@ -138,9 +170,11 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
     qDdot0Provisional_(false),
     tauGiven_(model_.nDoF(), Zero),
     fxGiven_(model_.nBodies(), Zero),
+    externalForces_(false),
     tauTotal_(model_.nDoF(), Zero),
     fxTotal_(model_.nBodies(), Zero),
-    qDdotGiven_(model_.nDoF(), Zero)
+    qDdotGiven_(model_.nDoF(), Zero),
+    qDdotExternal_(model_.nDoF(), Zero)
 {
     readRestraints(dict);
     model_.checkState(state_.q(), dict);
@@ -189,9 +223,11 @@ void Foam::RBD::rigidBodyMotion::solve
     {
         tauGiven_[i] = tau[i];
     }
+    externalForces_ = false;
     forAll(fxGiven_, i)
     {
         fxGiven_[i] = fx[i];
+        externalForces_ = externalForces_ || (mag(fx[i]) > 0);
     }
 
     initialAcceleration();

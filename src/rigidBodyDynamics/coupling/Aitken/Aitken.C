@@ -21,12 +21,12 @@ namespace couplingSchemes
 Foam::RBD::couplingSchemes::Aitken::Aitken
 (
     const dictionary& dict,
-    const label nDoF
+    const rigidBodyModel& model
 )
 :
-    couplingScheme(dict),
+    couplingScheme(dict, model),
     omega_(relaxation_),
-    rPrev_(nDoF, Zero)
+    rPrev_(model.nDoF(), Zero)
 {}
 
 
@@ -34,6 +34,7 @@ Foam::RBD::couplingSchemes::Aitken::Aitken
 
 void Foam::RBD::couplingSchemes::Aitken::correct
 (
+    const rigidBodyModelState&,
     const scalarField& aGiven,
     scalarField& a,
     const bool firstSolve

@@ -21,10 +21,10 @@ namespace couplingSchemes
 Foam::RBD::couplingSchemes::constant::constant
 (
     const dictionary& dict,
-    const label
+    const rigidBodyModel& model
 )
 :
-    couplingScheme(dict)
+    couplingScheme(dict, model)
 {}
 
 
@@ -32,6 +32,7 @@ Foam::RBD::couplingSchemes::constant::constant
 
 void Foam::RBD::couplingSchemes::constant::correct
 (
+    const rigidBodyModelState&,
     const scalarField& aGiven,
     scalarField& a,
     const bool

@@ -39,10 +39,16 @@ Foam::scalar readFactor(const Foam::dictionary& dict, const Foam::word& key)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::RBD::couplingScheme::couplingScheme(const dictionary& dict)
+Foam::RBD::couplingScheme::couplingScheme
+(
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
 :
+    model_(model),
     relaxation_(readFactor(dict, "accelerationRelaxation")),
-    damping_(readFactor(dict, "accelerationDamping"))
+    damping_(readFactor(dict, "accelerationDamping")),
+    residual_(0)
 {}
 
 
@@ -51,7 +57,7 @@ Foam::RBD::couplingScheme::couplingScheme(const dictionary& dict)
 Foam::autoPtr<Foam::RBD::couplingScheme> Foam::RBD::couplingScheme::New
 (
     const dictionary& dict,
-    const label nDoF
+    const rigidBodyModel& model
 )
 {
     const word schemeType
@@ -72,7 +78,7 @@ Foam::autoPtr<Foam::RBD::couplingScheme> Foam::RBD::couplingScheme::New
         ) << exit(FatalIOError);
     }
 
-    return cstrIter()(dict, nDoF);
+    return cstrIter()(dict, model);
 }
 
 
@@ -80,12 +86,27 @@ Foam::autoPtr<Foam::RBD::couplingScheme> Foam::RBD::couplingScheme::New
 
 void Foam::RBD::couplingScheme::relax
 (
+    const rigidBodyModelState& state,
     const scalarField& aGiven,
     scalarField& a,
     const bool firstSolve
 )
 {
-    correct(aGiven, a, firstSolve);
+    scalar r2 = 0, a2 = 0, g2 = 0;
+    forAll(a, i)
+    {
+        r2 += sqr(a[i] - aGiven[i]);
+        a2 += sqr(a[i]);
+        g2 += sqr(aGiven[i]);
+    }
+    residual_ = sqrt(r2/max(max(a2, g2), VSMALL));
+
+    if (debug)
+    {
+        Info<< type() << ": given " << aGiven << " new " << a << endl;
+    }
+
+    correct(state, aGiven, a, firstSolve);
 
     forAll(a, i)
     {

@@ -21,16 +21,16 @@ namespace couplingSchemes
 Foam::RBD::couplingSchemes::quasiNewton::quasiNewton
 (
     const dictionary& dict,
-    const label nDoF
+    const rigidBodyModel& model
 )
 :
-    couplingScheme(dict),
-    Jinv_(nDoF, Zero),
-    aGivenPrev_(nDoF, Zero),
-    rPrev_(nDoF, Zero),
-    da_(nDoF, Zero),
-    dr_(nDoF, Zero),
-    JinvDr_(nDoF, Zero)
+    couplingScheme(dict, model),
+    Jinv_(model.nDoF(), Zero),
+    aGivenPrev_(model.nDoF(), Zero),
+    rPrev_(model.nDoF(), Zero),
+    da_(model.nDoF(), Zero),
+    dr_(model.nDoF(), Zero),
+    JinvDr_(model.nDoF(), Zero)
 {
     resetJacobian();
 }
@@ -52,6 +52,7 @@ void Foam::RBD::couplingSchemes::quasiNewton::resetJacobian()
 
 void Foam::RBD::couplingSchemes::quasiNewton::correct
 (
+    const rigidBodyModelState&,
     const scalarField& aGiven,
     scalarField& a,
     const bool firstSolve
