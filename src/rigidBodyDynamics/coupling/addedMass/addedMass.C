@@ -16,6 +16,25 @@ namespace couplingSchemes
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The mass of the bodies of the model's tree (merged ones included)
+Foam::scalar totalMass(const Foam::RBD::rigidBodyModel& model)
+{
+    Foam::scalar m = 0;
+    for (Foam::label i = 1; i < model.nBodies(); ++i)
+    {
+        m += model.bodies()[i].m();
+    }
+    return m;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::couplingSchemes::addedMass::addedMass
@@ -26,6 +45,9 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
 :
     couplingScheme(dict, model),
     A_(model.nDoF(), Zero),
+    P_(model.nDoF(), Zero),
+    Q_(model.nDoF(), Zero),
+    forgetting_(0.9),
     learnt_(false),
     nSolves_(0),
     aGivenPrev_(model.nDoF(), Zero),
@@ -39,10 +61,8 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     y_(model.nDoF(), Zero),
     b_(model.nDoF(), Zero),
     x_(model.nDoF(), Zero),
-    rest_(model.nDoF()),
     ws_(model),
-    tauG_(model.nDoF(), Zero),
-    noForces_(model.nBodies(), Zero)
+    gravityScale_(mag(model.g())*sqrt(totalMass(model)))
 {}
 
 
@@ -140,35 +160,6 @@ Foam::scalar Foam::RBD::couplingSchemes::addedMass::normH
 }
 
 
-Foam::scalar Foam::RBD::couplingSchemes::addedMass::gravityScale
-(
-    const rigidBodyModelState& state
-)
-{
-    rest_.q() = state.q();
-    rest_.qDot() = Zero;
-    rest_.qDdot() = Zero;
-
-    // The joint forces that hold the state against gravity: tauG = H aG
-    model_.inverseDynamics(rest_, ws_, noForces_, tauG_);
-
-    M_ = H_;
-    if (!cholesky())
-    {
-        return 0;
-    }
-    choleskySolve(tauG_, x_);
-
-    scalar tauAG = 0;
-    forAll(tauG_, i)
-    {
-        tauAG += tauG_[i]*x_[i];
-    }
-
-    return sqrt(max(tauAG, scalar(0)));
-}
-
-
 bool Foam::RBD::couplingSchemes::addedMass::newtonStep
 (
     const scalarField& aGiven,
@@ -207,38 +198,72 @@ bool Foam::RBD::couplingSchemes::addedMass::newtonStep
 }
 
 
+void Foam::RBD::couplingSchemes::addedMass::choleskySolveRows
+(
+    const scalarSquareMatrix& B,
+    scalarSquareMatrix& X
+)
+{
+    const label n = B.m();
+
+    for (label row = 0; row < n; ++row)
+    {
+        for (label k = 0; k < n; ++k)
+        {
+            b_[k] = B(row, k);
+        }
+        choleskySolve(b_, x_);
+        for (label k = 0; k < n; ++k)
+        {
+            X(row, k) = x_[k];
+        }
+    }
+}
+
+
 void Foam::RBD::couplingSchemes::addedMass::update()
 {
     const label n = A_.m();
 
-    // Powell-symmetric-Broyden, e = y - A s:
-    //     A += (e s^T + s e^T)/(s.s) - (e.s) s s^T/(s.s)^2
-    scalar ss = 0;
+    // The sums, older pairs forgotten a little
+    scalar trQ = 0;
     for (label i = 0; i < n; ++i)
     {
-        scalar As = 0;
         for (label j = 0; j < n; ++j)
         {
-            As += A_(i, j)*s_[j];
+            P_(i, j) = forgetting_*P_(i, j) + y_[i]*s_[j];
+            Q_(i, j) = forgetting_*Q_(i, j) + s_[i]*s_[j];
         }
-        b_[i] = y_[i] - As;
-        ss += sqr(s_[i]);
+        trQ += Q_(i, i);
     }
-    scalar es = 0;
+
+    // A^T = Q^-1 P^T, Q regularised where no pair has moved the
+    // accelerations yet
     for (label i = 0; i < n; ++i)
     {
-        es += b_[i]*s_[i];
+        for (label j = 0; j < n; ++j)
+        {
+            M_(i, j) = Q_(i, j) + (i == j ? 1e-9*trQ + VSMALL : 0);
+        }
     }
 
     Aold_ = A_;
-    for (label i = 0; i < n; ++i)
+    if (cholesky())
     {
-        for (label j = 0; j < n; ++j)
+        choleskySolveRows(P_, A_);
+
+        // A = (A + A^T)/2
+        for (label i = 0; i < n; ++i)
         {
-            A_(i, j) +=
-                (b_[i]*s_[j] + s_[i]*b_[j])/ss - es*s_[i]*s_[j]/sqr(ss);
+            for (label j = i + 1; j < n; ++j)
+            {
+                const scalar a = 0.5*(A_(i, j) + A_(j, i));
+                A_(i, j) = a;
+                A_(j, i) = a;
+            }
         }
     }
+
     for (label i = 0; i < n; ++i)
     {
         for (label j = 0; j < n; ++j)
@@ -247,7 +272,7 @@ void Foam::RBD::couplingSchemes::addedMass::update()
         }
     }
 
-    // Refused unless A > -H/10: added mass is not negative, and a secant
+    // Refused unless A > -H/10: added mass is not negative, and a fit
     // spoilt by noise must not leave H + A near losing definiteness
     const bool accepted = cholesky();
     if (accepted)
@@ -325,10 +350,9 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     scalar omega = relaxation_;
     const scalar rH = normH(r_);
-    const scalar gH = gravityScale(state);
-    if (gH > VSMALL && omega*rH > gH)
+    if (gravityScale_ > 0 && omega*rH > gravityScale_)
     {
-        omega = gH/rH;
+        omega = gravityScale_/rH;
     }
 
     for (label i = 0; i < n; ++i)
@@ -352,11 +376,10 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
 
     // The share of the fluid's forces, capped at gravity's size
     const scalar eH = normH(aExternal);
-    const scalar gH = gravityScale(state0);
 
-    if (gH > VSMALL && eH > gH)
+    if (gravityScale_ > 0 && eH > gravityScale_)
     {
-        const scalar cut = 1 - gH/eH;
+        const scalar cut = 1 - gravityScale_/eH;
         forAll(a, i)
         {
             a[i] -= cut*aExternal[i];
