@@ -1,4 +1,5 @@
 #include "rigidBodyMotion.H"
+#include "unitConversion.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -152,6 +153,33 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
 }
 
 
+void Foam::RBD::rigidBodyMotion::checkSingularities() const
+{
+    for (label i = 1; i < model_.nBodies(); ++i)
+    {
+        const joint& J = model_.joints()[i];
+
+        if (J.nearSingularity(state_.q()))
+        {
+            FatalErrorInFunction
+                << "Body " << model_.bodies()[i].name() << ": its "
+                << J.type() << " joint (Euler angles; the rotation of a"
+                << " floating joint is one) reached its singularity at"
+                << " t = " << state_.t() << " s: the middle angle is "
+                << radToDeg(state_.q()[J.qIndex() + 1])
+                << " degrees, within 1 degree of +-90, where its angles"
+                << " cannot represent the body's turning." << nl
+                << "Give the body a joint without the singularity, e.g."
+                << " for a free body" << nl
+                << "    joint { type composite; joints ({ type Pxyz; }"
+                << " { type Rs; }); }" << nl
+                << "(Rs: a quaternion, any orientation)"
+                << exit(FatalError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::rigidBodyMotion::rigidBodyMotion
@@ -243,6 +271,8 @@ void Foam::RBD::rigidBodyMotion::solve
 
     // The solver's last evaluation was at an intermediate state
     wsValid_ = false;
+
+    checkSingularities();
 }
 
 

@@ -62,3 +62,10 @@ void Foam::RBD::joints::euler::jcalc
     J.v = spatialVector(u1 + u2 + u3, Zero);
     J.c = spatialVector((u1 ^ (u2 + u3)) + (u2 ^ u3), Zero);
 }
+
+
+bool Foam::RBD::joints::euler::nearSingularity(const scalarField& q) const
+{
+    // |cos(q1)| < sin(1 degree)
+    return mag(cos(q[qIndex() + 1])) < 0.0174524064372835;
+}
