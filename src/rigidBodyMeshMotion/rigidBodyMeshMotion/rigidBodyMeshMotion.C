@@ -8,6 +8,8 @@
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
 #include "volFields.H"
+#include "unitConversion.H"
+#include "OStringStream.H"
 
 namespace Foam
 {
@@ -160,6 +162,161 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
             << " points (patches " << b.patches << ", innerDistance "
             << b.innerDistance << ", outerDistance " << b.outerDistance
             << ")" << endl;
+    }
+
+    // The cells that use a moved point, and their volumes now
+    boolList inBand(mesh().nCells(), false);
+    forAll(bodyMeshes_, bi)
+    {
+        for (const label pi : bodyMeshes_[bi].pointIDs)
+        {
+            for (const label celli : mesh().pointCells()[pi])
+            {
+                inBand[celli] = true;
+            }
+        }
+    }
+    bandCells_ = findIndices(inBand, true);
+    bandVolumes0_.setSize(bandCells_.size());
+    forAll(bandCells_, i)
+    {
+        bandVolumes0_[i] = mesh().cellVolumes()[bandCells_[i]];
+    }
+}
+
+
+Foam::scalar Foam::rigidBodyMeshMotion::displacedVolume
+(
+    const label celli
+) const
+{
+    // Divergence theorem: V = sum over faces of (centre & area vector)/3,
+    // area vectors out of the cell, from the displaced points
+    const pointField& p0 = points0();
+    const pointField& d = pointDisplacement_.primitiveField();
+    const faceList& faces = mesh().faces();
+    const labelList& owner = mesh().faceOwner();
+
+    scalar V = 0;
+    for (const label facei : mesh().cells()[celli])
+    {
+        const face& f = faces[facei];
+
+        // The face's centre and area vector from triangles about its
+        // points' average
+        vector centre(Zero);
+        forAll(f, k)
+        {
+            centre += p0[f[k]] + d[f[k]];
+        }
+        centre /= f.size();
+
+        vector Sf(Zero);
+        forAll(f, k)
+        {
+            const point a(p0[f[k]] + d[f[k]]);
+            const point b(p0[f.nextLabel(k)] + d[f.nextLabel(k)]);
+            Sf += 0.5*((a - centre) ^ (b - centre));
+        }
+
+        V += (owner[facei] == celli ? 1 : -1)*(centre & Sf)/3;
+    }
+
+    return V;
+}
+
+
+void Foam::rigidBodyMeshMotion::checkCells() const
+{
+    label worst = -1;
+    scalar worstRatio = GREAT;
+    forAll(bandCells_, i)
+    {
+        const scalar ratio =
+            displacedVolume(bandCells_[i])/bandVolumes0_[i];
+        if (ratio < worstRatio)
+        {
+            worstRatio = ratio;
+            worst = i;
+        }
+    }
+
+    if (returnReduce(worstRatio, minOp<scalar>()) >= 0.01)
+    {
+        return;
+    }
+
+    // The body whose band holds the crushed cell (on the processor that
+    // has it), and how far it has moved from where points0 put it
+    OStringStream what;
+    if (worst >= 0 && worstRatio < 0.01)
+    {
+        const point c(mesh().cellCentres()[bandCells_[worst]]);
+        label bi = 0;
+        scalar nearest = GREAT;
+        forAll(bodyMeshes_, b)
+        {
+            const scalar dist = mag(c - bodyMeshes_[b].X.r());
+            if (dist < nearest)
+            {
+                nearest = dist;
+                bi = b;
+            }
+        }
+        const bodyMesh& b = bodyMeshes_[bi];
+        const scalar moved = mag(b.X.r() - b.X00.r());
+        const scalar turned =
+            radToDeg
+            (
+                acos
+                (
+                    min
+                    (
+                        max
+                        (
+                            0.5*(tr(b.X.E().T() & b.X00.E()) - 1),
+                            scalar(-1)
+                        ),
+                        scalar(1)
+                    )
+                )
+            );
+        what<< "Body " << b.name << " at t = " << mesh().time().value()
+            << " s has moved " << moved << " m and turned " << turned
+            << " degrees from where the mesh was made; a cell at " << c
+            << " in its band (innerDistance " << b.innerDistance
+            << ", outerDistance " << b.outerDistance << ") would be"
+            << " crushed to " << worstRatio << " of its volume.";
+    }
+
+    // The processor that has the cell says it
+    List<string> messages(Pstream::nProcs());
+    messages[Pstream::myProcNo()] = what.str();
+    Pstream::gatherList(messages);
+
+    if (Pstream::master())
+    {
+        string message;
+        for (const string& m : messages)
+        {
+            if (m.size())
+            {
+                message = m;
+                break;
+            }
+        }
+
+        FatalErrorInFunction
+            << message.c_str() << nl
+            << "The body has moved further than its band can absorb (about"
+            << " (outerDistance - innerDistance)/1.5), or into a wall:"
+            << " the mesh would tangle.  Widen the band, give the body room"
+            << " (its joint's range, a restraint), or remesh." << nl
+            << exit(FatalError);
+    }
+    else
+    {
+        FatalErrorInFunction << exit(FatalError);
     }
 }
 
@@ -328,6 +485,7 @@ void Foam::rigidBodyMeshMotion::solve()
     }
 
     displace();
+    checkCells();
 
     if (driver_.report())
     {
