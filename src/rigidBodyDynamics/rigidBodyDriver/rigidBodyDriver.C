@@ -205,7 +205,8 @@ void Foam::RBD::rigidBodyDriver::reportCoupling() const
     if (r > couplingTolerance_)
     {
         Info<< ": NOT CONVERGED (couplingTolerance " << couplingTolerance_
-            << "; more outer correctors would converge it)";
+            << "; more outer correctors, or another"
+            << " accelerationRelaxationType, may converge it)";
     }
     Info<< endl;
 }
@@ -230,7 +231,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     curTimeIndex_(-1),
     couplingTolerance_
     (
-        coeffs.getOrDefault<scalar>("couplingTolerance", 1e-3)
+        coeffs.getOrDefault<scalar>("couplingTolerance", 0.05)
     ),
     names_(coeffs.subDict("bodies").toc()),
     bodyIDs_(names_.size()),

@@ -99,7 +99,10 @@ void Foam::RBD::couplingScheme::relax
         a2 += sqr(a[i]);
         g2 += sqr(aGiven[i]);
     }
-    residual_ = sqrt(r2/max(max(a2, g2), VSMALL));
+    // Relative to the accelerations, or to gravity's where they are
+    // smaller (a floating body's accelerations are small and noisy)
+    residual_ =
+        sqrt(r2)/max(max(sqrt(max(a2, g2)), mag(model_.g())), VSMALL);
 
     if (debug)
     {
