@@ -339,6 +339,13 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     if (learnt_ && newtonStep(aGiven, a))
     {
+        // The fraction accelerationRelaxation of Newton's step: the stock
+        // scheme where the added mass is small, and where it is not an
+        // error that shrinks by (1 - omega) per solve whatever the density
+        for (label i = 0; i < n; ++i)
+        {
+            a[i] = aGiven[i] + relaxation_*(a[i] - aGiven[i]);
+        }
         return;
     }
 
