@@ -125,7 +125,8 @@ void Foam::RBD::rigidBodyDriver::storeRows()
         for (const scalar s : fxR_[master].l()) row[k++] = s;
         for (const scalar s : fxR_[master].w()) row[k++] = s;
         row[k++] = body.kineticEnergy(ws.v[master]);
-        row[k++] = -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
+        row[k++] =
+            -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
     }
 
     rowsPending_ = true;

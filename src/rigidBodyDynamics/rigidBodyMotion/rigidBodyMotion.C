@@ -120,7 +120,13 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
         {
             fxTotal_[i] -= fxGiven_[i];
         }
-        model_.articulatedBodyDynamics(tauTotal_, fxTotal_, ws_, qDdotExternal_);
+        model_.articulatedBodyDynamics
+        (
+            tauTotal_,
+            fxTotal_,
+            ws_,
+            qDdotExternal_
+        );
         forAll(qDdotExternal_, i)
         {
             qDdotExternal_[i] = state0_.qDdot()[i] - qDdotExternal_[i];
