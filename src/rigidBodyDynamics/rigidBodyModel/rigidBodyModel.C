@@ -78,12 +78,24 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
                     << exit(FatalIOError);
             }
 
+            // With both, the merge wins, as in the stock library (whose
+            // own test dictionaries name the same body in both)
             const bool merged = bodyDict.found("mergeWith");
-            if (merged && bodyDict.found("parent"))
+            if
+            (
+                merged
+             && bodyDict.found("parent")
+             && bodyDict.get<word>("parent")
+             != bodyDict.get<word>("mergeWith")
+            )
             {
-                FatalIOErrorInFunction(bodyDict)
-                    << "Body " << name << " has both parent and mergeWith"
-                    << nl << exit(FatalIOError);
+                IOWarningInFunction(bodyDict)
+                    << "Body " << name << " has parent "
+                    << bodyDict.get<word>("parent") << " and mergeWith "
+                    << bodyDict.get<word>("mergeWith") << ": it is merged"
+                    << " with " << bodyDict.get<word>("mergeWith")
+                    << " and parent is ignored, as the stock library does"
+                    << endl;
             }
 
             const word parentKey(merged ? "mergeWith" : "parent");
@@ -115,6 +127,12 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
                         << "Body " << name << " is merged with "
                         << parentName << " and cannot have a joint" << nl
                         << exit(FatalIOError);
+                }
+                if (parentName == "root")
+                {
+                    IOWarningInFunction(bodyDict)
+                        << "Body " << name << " is merged with root: it"
+                        << " never moves" << endl;
                 }
                 merge(bodyID(parentName), XT, std::move(body));
             }
