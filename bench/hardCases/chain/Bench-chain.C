@@ -152,7 +152,7 @@ void runCase
         (
             "| %g | %s | %d | %s | %s | %s | %s | %.1f |\n",
             dt, s.name, int(nIter),
-            fmt("%.2e", sE.max()).c_str(),
+            fmt("%.2e", sE.largest()).c_str(),
             fmt("%+.2e", sE.slope()).c_str(),
             tenths.c_str(),
             sE.secular() ? "drifts" : "bounded",

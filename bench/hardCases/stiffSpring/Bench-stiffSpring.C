@@ -140,7 +140,7 @@ void exact(const scalar zeta, const scalar t, scalar& x, scalar& v)
 }
 
 
-scalar energy(const scalar x, const scalar v)
+scalar springEnergy(const scalar x, const scalar v)
 {
     return 0.5*mass*v*v + 0.5*k*x*x;
 }
@@ -236,7 +236,7 @@ result runCase
     const scalarField tau(1, Zero);
     const Field<spatialVector> fx(m.model().nBodies(), Zero);
 
-    const scalar E0 = energy(x0, 0);
+    const scalar E0 = springEnergy(x0, 0);
     scalar phase = 0;
     scalar prevArg = 0;
     bool lost = false;
@@ -279,7 +279,8 @@ result runCase
         std::abs(std::complex<scalar>(r.x, -r.v/omega))
        /std::abs(std::complex<scalar>(xe, -ve/omega));
     r.phaseDeg = lost ? NAN : phase*180/constant::mathematical::pi;
-    r.energyRatio = energy(r.x, r.v)/(zeta > 0 ? energy(xe, ve) : E0);
+    r.energyRatio =
+        springEnergy(r.x, r.v)/(zeta > 0 ? springEnergy(xe, ve) : E0);
 
     return r;
 }
@@ -293,7 +294,7 @@ std::string fmt(const char* f, const scalar x)
 }
 
 
-void table(const scalar zeta)
+void springTable(const scalar zeta)
 {
     const scalar omegaDts[] = {0.3, 1.3, 3};
     const label nIters[] = {1, 2, 5, 20};
@@ -482,7 +483,8 @@ int main(int argc, char *argv[])
         std::printf
         (
             "steps %d x %.17g v %.17g maxX %.10g E/E0 %.10g\n",
-            int(r.nSteps), r.x, r.v, r.maxX, energy(r.x, r.v)/energy(x0, 0)
+            int(r.nSteps), r.x, r.v, r.maxX,
+            springEnergy(r.x, r.v)/springEnergy(x0, 0)
         );
         return 0;
     }
@@ -494,9 +496,9 @@ int main(int argc, char *argv[])
     );
 
     std::printf("\nUndamped:\n");
-    table(0);
+    springTable(0);
     std::printf("\nDamping ratio 0.05:\n");
-    table(0.05);
+    springTable(0.05);
     solvesTable();
     relaxedTable();
 
