@@ -85,13 +85,8 @@ Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
 }
 
 
-void Foam::RBD::rigidBodyDriver::storeRows()
+void Foam::RBD::rigidBodyDriver::fillRows()
 {
-    if (!Pstream::master())
-    {
-        return;
-    }
-
     const rigidBodyModel& model = motion_.model();
     const rigidBodyModelWorkspace& ws = motion_.workspace();
     const rigidBodyModelState& state = motion_.state();
@@ -110,7 +105,7 @@ void Foam::RBD::rigidBodyDriver::storeRows()
 
         scalarField& row = rows_[bi];
         label k = 0;
-        row[k++] = time_.value();
+        row[k++] = state.t();
         for (const scalar s : X.r()) row[k++] = s;
         for (const scalar s : X.E()) row[k++] = s;
         for (const scalar s : v.l()) row[k++] = s;
@@ -128,8 +123,6 @@ void Foam::RBD::rigidBodyDriver::storeRows()
         row[k++] =
             -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
     }
-
-    rowsPending_ = true;
 }
 
 
@@ -139,6 +132,8 @@ void Foam::RBD::rigidBodyDriver::writeRows()
     {
         return;
     }
+
+    fillRows();
 
     if (tables_.empty())
     {
@@ -261,10 +256,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 
     // A row for the start, where its forces are known (no external forces:
     // a fluid's are known only once the first solve has computed them)
-    if (!externalForces_)
-    {
-        storeRows();
-    }
+    rowsPending_ = !externalForces_;
 }
 
 
@@ -324,7 +316,8 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     }
     Pstream::scatter(motion_.state());
 
-    storeRows();
+    // The row of the step is made from its last solve, when it is written
+    rowsPending_ = true;
 }
 
 
