@@ -26,6 +26,7 @@ Usage
 
 #include "testModels.H"
 #include "driftStats.H"
+#include "benchCases.H"
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -37,20 +38,9 @@ namespace
 
 const label nLinks = 10;
 
-struct solverCase
-{
-    const char* name;
-    const char* dict;
-};
-
-const solverCase solverCases[] =
-{
-    {"Newmark", "type Newmark;"},
-    {"Newmark gamma 0.6 beta 0.3025", "type Newmark; gamma 0.6; beta 0.3025;"},
-    {"CrankNicolson", "type CrankNicolson;"},
-    {"CrankNicolson aoc 0.6 voc 0.55", "type CrankNicolson; aoc 0.6; voc 0.55;"},
-    {"symplectic", "type symplectic;"}
-};
+using hardCases::solverCase;
+using hardCases::solverCases;
+using hardCases::fmt;
 
 
 std::string modelText(const std::string& solverDict, const label nIter)
@@ -75,14 +65,6 @@ std::string modelText(const std::string& solverDict, const label nIter)
     return
         "g (0 0 -9.81); solver { " + solverDict + " } nIter "
       + std::to_string(nIter) + "; bodies { " + bodies + "} q (" + q + ");";
-}
-
-
-std::string fmt(const char* f, const scalar x)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), f, x);
-    return buf;
 }
 
 
@@ -167,24 +149,13 @@ void runCase
 
 int main(int argc, char *argv[])
 {
-    label nSteps = 1000000;
-    scalar onlyDt = 0;
-    std::string onlySolver;
-    label onlyNIter = 0;
-
-    for (int i = 1; i + 1 < argc; i += 2)
+    hardCases::options o;
+    o.length = 1000000;
+    if (!hardCases::readOptions(argc, argv, "-steps", o))
     {
-        const std::string opt(argv[i]);
-        if (opt == "-steps") nSteps = std::atol(argv[i + 1]);
-        else if (opt == "-dt") onlyDt = std::atof(argv[i + 1]);
-        else if (opt == "-solver") onlySolver = argv[i + 1];
-        else if (opt == "-nIter") onlyNIter = std::atoi(argv[i + 1]);
-        else
-        {
-            std::fprintf(stderr, "unknown option %s\n", argv[i]);
-            return 1;
-        }
+        return 1;
     }
+    const label nSteps = label(o.length);
 
     {
         autoPtr<RBD::rigidBodyMotion> m =
@@ -207,15 +178,14 @@ int main(int argc, char *argv[])
 
     for (const scalar dt : {1e-3, 5e-4})
     {
-        if (onlyDt > 0 && std::fabs(dt - onlyDt) > 1e-12) continue;
 
         for (const solverCase& s : solverCases)
         {
-            if (!onlySolver.empty() && onlySolver != s.name) continue;
+            if (!o.runs(dt, s.name)) continue;
 
             for (const label nIter : {1, 4})
             {
-                if (onlyNIter && nIter != onlyNIter) continue;
+                if (o.nIter && nIter != o.nIter) continue;
 
                 runCase(s, nIter, dt, nSteps);
             }

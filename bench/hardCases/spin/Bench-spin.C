@@ -36,6 +36,7 @@ Usage
 
 #include "testModels.H"
 #include "driftStats.H"
+#include "benchCases.H"
 #include "mathematicalConstants.H"
 #include <chrono>
 #include <cstdio>
@@ -50,20 +51,9 @@ namespace
 const scalar I1 = 1, I2 = 2, I3 = 3;
 const scalar spin = 50, perturbation = 0.5;
 
-struct solverCase
-{
-    const char* name;
-    const char* dict;
-};
-
-const solverCase solverCases[] =
-{
-    {"Newmark", "type Newmark;"},
-    {"Newmark gamma 0.6 beta 0.3025", "type Newmark; gamma 0.6; beta 0.3025;"},
-    {"CrankNicolson", "type CrankNicolson;"},
-    {"CrankNicolson aoc 0.6 voc 0.55", "type CrankNicolson; aoc 0.6; voc 0.55;"},
-    {"symplectic", "type symplectic;"}
-};
+using hardCases::solverCase;
+using hardCases::solverCases;
+using hardCases::fmt;
 
 
 //- Complete elliptic integral of the first kind K(k), by the
@@ -125,14 +115,6 @@ vector angularMomentum(RBD::rigidBodyMotion& m, const label id)
 scalar angle(const vector& a, const vector& b)
 {
     return std::atan2(mag(a ^ b), a & b);
-}
-
-
-std::string fmt(const char* f, const scalar x)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), f, x);
-    return buf;
 }
 
 
@@ -258,24 +240,13 @@ void runCase
 
 int main(int argc, char *argv[])
 {
-    scalar nFlips = 1000;
-    scalar onlyDt = 0;
-    std::string onlySolver;
-    label onlyNIter = 0;
-
-    for (int i = 1; i + 1 < argc; i += 2)
+    hardCases::options o;
+    o.length = 1000;
+    if (!hardCases::readOptions(argc, argv, "-flips", o))
     {
-        const std::string opt(argv[i]);
-        if (opt == "-flips") nFlips = std::atof(argv[i + 1]);
-        else if (opt == "-dt") onlyDt = std::atof(argv[i + 1]);
-        else if (opt == "-solver") onlySolver = argv[i + 1];
-        else if (opt == "-nIter") onlyNIter = std::atoi(argv[i + 1]);
-        else
-        {
-            std::fprintf(stderr, "unknown option %s\n", argv[i]);
-            return 1;
-        }
+        return 1;
     }
+    const scalar nFlips = scalar(o.length);
 
     const scalar tFlip = flipTime();
     const scalar tEnd = nFlips*tFlip;
@@ -296,15 +267,14 @@ int main(int argc, char *argv[])
 
     for (const scalar dt : {1e-3, 5e-4})
     {
-        if (onlyDt > 0 && std::fabs(dt - onlyDt) > 1e-12) continue;
 
         for (const solverCase& s : solverCases)
         {
-            if (!onlySolver.empty() && onlySolver != s.name) continue;
+            if (!o.runs(dt, s.name)) continue;
 
             for (const label nIter : {1, 4})
             {
-                if (onlyNIter && nIter != onlyNIter) continue;
+                if (o.nIter && nIter != o.nIter) continue;
 
                 runCase(s, nIter, dt, tEnd, tFlip);
             }

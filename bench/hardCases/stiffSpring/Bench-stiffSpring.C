@@ -35,6 +35,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "testModels.H"
+#include "benchCases.H"
 #include "mathematicalConstants.H"
 #include <complex>
 #include <cstdio>
@@ -43,6 +44,7 @@ Description
 #include <vector>
 
 using namespace Foam;
+using hardCases::fmt;
 
 namespace
 {
@@ -283,14 +285,6 @@ result runCase
         springEnergy(r.x, r.v)/(zeta > 0 ? springEnergy(xe, ve) : E0);
 
     return r;
-}
-
-
-std::string fmt(const char* f, const scalar x)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), f, x);
-    return buf;
 }
 
 
