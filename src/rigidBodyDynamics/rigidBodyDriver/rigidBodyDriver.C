@@ -16,13 +16,20 @@ namespace RBD
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::dictionary Foam::RBD::rigidBodyDriver::withGravity
+Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
 (
     const Time& runTime,
-    const dictionary& coeffs
+    const dictionary& coeffs,
+    const bool externalForces
 )
 {
     dictionary dict(coeffs);
+
+    // A fluid's added mass makes the stock scheme diverge for light bodies
+    if (externalForces && !dict.found("accelerationRelaxationType"))
+    {
+        dict.add("accelerationRelaxationType", "addedMass");
+    }
 
     if (!dict.found("g"))
     {
@@ -221,7 +228,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 :
     time_(runTime),
     name_(name),
-    motion_(withGravity(runTime, coeffs), stateDict),
+    motion_(motionDict(runTime, coeffs, externalForces), stateDict),
     report_(coeffs.getOrDefault<Switch>("report", false)),
     externalForces_(externalForces),
     curTimeIndex_(-1),
@@ -353,5 +360,5 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
 bool Foam::RBD::rigidBodyDriver::read(const dictionary& coeffs)
 {
     report_ = coeffs.getOrDefault<Switch>("report", false);
-    return motion_.read(coeffs);
+    return motion_.read(motionDict(time_, coeffs, externalForces_));
 }

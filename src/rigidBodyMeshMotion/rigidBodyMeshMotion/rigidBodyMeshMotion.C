@@ -330,10 +330,17 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
 )
 :
     displacementMotionSolver(mesh, dict, typeName),
-    driver_(mesh.time(), coeffDict(), typeName, true),
+    driver_
+    (
+        mesh.time(),
+        coeffDict(),
+        typeName,
+        !coeffDict().getOrDefault<Switch>("test", false)
+    ),
     test_(coeffDict().getOrDefault<Switch>("test", false)),
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
+    addedMassTimeIndex_(-1),
     fx_(driver_.model().nBodies(), Zero)
 {
     Info<< "rigidBodyMotion: the rigid-body dynamics project's"
@@ -426,6 +433,70 @@ void Foam::rigidBodyMeshMotion::fluidForces()
 }
 
 
+void Foam::rigidBodyMeshMotion::giveAddedMass()
+{
+    const label timeIndex = mesh().time().timeIndex();
+
+    if
+    (
+        test_
+     || !driver_.motion().coupling().usesFluidAddedMass()
+     || timeIndex == addedMassTimeIndex_
+    )
+    {
+        return;
+    }
+    addedMassTimeIndex_ = timeIndex;
+
+    if (!addedMass_.valid())
+    {
+        labelList bodyIDs(bodyMeshes_.size());
+        List<labelHashSet> patches(bodyMeshes_.size());
+        forAll(bodyMeshes_, bi)
+        {
+            bodyIDs[bi] = bodyMeshes_[bi].bodyID;
+            patches[bi] = bodyMeshes_[bi].patchSet;
+        }
+
+        addedMass_.reset
+        (
+            new Foam::fluidAddedMass
+            (
+                refCast<const fvMesh>(mesh()),
+                rhoName_,
+                rhoInf_,
+                driver_.model(),
+                driver_.motion().state(),
+                bodyIDs,
+                patches
+            )
+        );
+    }
+
+    const scalar ramp = driver_.motion().ramp(mesh().time().value());
+    if
+    (
+        !addedMass_->update(driver_.model(), driver_.motion().state())
+     && ramp == 1
+    )
+    {
+        return;
+    }
+
+    // Scaled as the fluid's forces are, by the ramp
+    scalarSquareMatrix A(addedMass_->A());
+    A *= ramp;
+
+    if (driver_.report())
+    {
+        Info<< "rigidBodyMotion: the fluid's added mass in joint space "
+            << A << endl;
+    }
+
+    driver_.motion().setFluidAddedMass(A);
+}
+
+
 void Foam::rigidBodyMeshMotion::displace()
 {
     pointField& disp = pointDisplacement_.primitiveFieldRef();
@@ -476,6 +547,7 @@ void Foam::rigidBodyMeshMotion::solve()
     }
 
     fluidForces();
+    giveAddedMass();
 
     driver_.solve(fx_);
 
@@ -513,6 +585,9 @@ bool Foam::rigidBodyMeshMotion::read()
 {
     if (displacementMotionSolver::read())
     {
+        // A new coupling scheme: give it the added mass at the next step
+        addedMass_.clear();
+        addedMassTimeIndex_ = -1;
         return driver_.read(coeffDict());
     }
 

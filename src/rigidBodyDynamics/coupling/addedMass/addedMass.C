@@ -32,6 +32,25 @@ Foam::scalar totalMass(const Foam::RBD::rigidBodyModel& model)
     return m;
 }
 
+//- Entry addedMass: fluid (true) or learnt (false)
+bool readAddedMassSource(const Foam::dictionary& dict)
+{
+    const Foam::wordList choices({"fluid", "learnt"});
+    const Foam::word source =
+        dict.getOrDefault<Foam::word>("addedMass", choices[0]);
+
+    if (!choices.found(source))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry addedMass " << source << ": unknown; valid choices: "
+            << choices << " (fluid: computed by the mesh motion from the"
+            << " fluid each time step; learnt: from the solves' answers)"
+            << Foam::nl << Foam::exit(Foam::FatalIOError);
+    }
+
+    return source == choices[0];
+}
+
 } // End anonymous namespace
 
 
@@ -49,6 +68,8 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     Q_(model.nDoF(), Zero),
     forgetting_(0.9),
     learnt_(false),
+    useFluid_(readAddedMassSource(dict)),
+    fromFluid_(false),
     nSolves_(0),
     aGivenPrev_(model.nDoF(), Zero),
     aNewPrev_(model.nDoF(), Zero),
@@ -310,7 +331,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
     // given changed enough to tell the forces' answer from their noise
     // (not from the first solve of all: the fluid at rest it was given had
     // answered no acceleration)
-    if (!firstSolve && nSolves_ >= 2)
+    if (!fromFluid_ && !firstSolve && nSolves_ >= 2)
     {
         for (label i = 0; i < n; ++i)
         {
@@ -339,6 +360,16 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     if (learnt_ && newtonStep(aGiven, a))
     {
+        // The residual: how far from the coupled answer the accelerations
+        // given were, the length of Newton's step (the solve's change of
+        // the accelerations overstates it by (H + A)/H)
+        scalar x2 = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            x2 += sqr(x_[i]);
+        }
+        residual_ = relativeSize(sqrt(x2), a, aGiven);
+
         // The fraction accelerationRelaxation of Newton's step: the stock
         // scheme where the added mass is small, and where it is not an
         // error that shrinks by (1 - omega) per solve whatever the density
@@ -371,6 +402,22 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::RBD::couplingSchemes::addedMass::setFluidAddedMass
+(
+    const scalarSquareMatrix& A
+)
+{
+    A_ = A;
+    learnt_ = true;
+    fromFluid_ = true;
+
+    if (debug)
+    {
+        Info<< "addedMass: the fluid's added mass " << A_ << endl;
+    }
+}
+
+
 void Foam::RBD::couplingSchemes::addedMass::relaxStart
 (
     const rigidBodyModelState& state0,
@@ -380,6 +427,17 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
 )
 {
     massMatrix(state0);
+
+    // The fluid at rest has answered no acceleration yet: with its added
+    // mass on both sides, (H + A) a = H a
+    if (fromFluid_)
+    {
+        s_ = Zero;
+        if (newtonStep(s_, a))
+        {
+            return;
+        }
+    }
 
     // The share of the fluid's forces, capped at gravity's size
     const scalar eH = normH(aExternal);

@@ -82,6 +82,28 @@ Foam::autoPtr<Foam::RBD::couplingScheme> Foam::RBD::couplingScheme::New
 }
 
 
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::scalar Foam::RBD::couplingScheme::relativeSize
+(
+    const scalar r,
+    const scalarField& a,
+    const scalarField& aGiven
+) const
+{
+    scalar a2 = 0, g2 = 0;
+    forAll(a, i)
+    {
+        a2 += sqr(a[i]);
+        g2 += sqr(aGiven[i]);
+    }
+
+    // Relative to the accelerations, or to gravity's where they are
+    // smaller (a floating body's accelerations are small and noisy)
+    return r/max(max(sqrt(max(a2, g2)), mag(model_.g())), VSMALL);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::RBD::couplingScheme::relax
@@ -92,17 +114,12 @@ void Foam::RBD::couplingScheme::relax
     const bool firstSolve
 )
 {
-    scalar r2 = 0, a2 = 0, g2 = 0;
+    scalar r2 = 0;
     forAll(a, i)
     {
         r2 += sqr(a[i] - aGiven[i]);
-        a2 += sqr(a[i]);
-        g2 += sqr(aGiven[i]);
     }
-    // Relative to the accelerations, or to gravity's where they are
-    // smaller (a floating body's accelerations are small and noisy)
-    residual_ =
-        sqrt(r2)/max(max(sqrt(max(a2, g2)), mag(model_.g())), VSMALL);
+    residual_ = relativeSize(sqrt(r2), a, aGiven);
 
     if (debug)
     {
