@@ -110,8 +110,10 @@ const char* model =
 
 int main(int argc, char *argv[])
 {
-    const char* solvers[] = {"Newmark", "CrankNicolson", "symplectic"};
-    const char* relaxations[] = {"quasiNewton", "Aitken", "constant"};
+    const char* solvers[] =
+        {"Newmark", "CrankNicolson", "symplectic", "Newmark"};
+    const char* relaxations[] =
+        {"quasiNewton", "Aitken", "constant", "addedMass"};
 
     // The counter sees an allocation made by OpenFOAM's containers
     {
@@ -122,7 +124,7 @@ int main(int argc, char *argv[])
         test::check(nNew > 0, "the operator new counter sees allocations");
     }
 
-    for (label si = 0; si < 3; ++si)
+    for (label si = 0; si < 4; ++si)
     {
         const char* solver = solvers[si];
         autoPtr<RBD::rigidBodyMotion> m = test::motion

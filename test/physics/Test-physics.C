@@ -473,11 +473,11 @@ void addedMass()
         "added mass 3 m, constant relaxation 1: the iterations diverge"
     );
 
-    // addedMass: Newton's step with the added mass learnt from the solves,
-    // for any ratio, in the three outer correctors of a typical case (the
-    // force here answers the acceleration exactly linearly, so the learnt
-    // added mass is exact and the full step, accelerationRelaxation 1,
-    // converges at once)
+    // addedMass learnt: Newton's step with the added mass learnt from the
+    // solves, for any ratio, in the three outer correctors of a typical
+    // case (the force here answers the acceleration exactly linearly, so
+    // the learnt added mass is exact and the full step,
+    // accelerationRelaxation 1, converges at once)
     for (const scalar Ma : {0.2, 3.0, 1e3, 1e4})
     {
         checkAbs
@@ -485,7 +485,7 @@ void addedMass()
             addedMassError
             (
                 "accelerationRelaxation 1;"
-                " accelerationRelaxationType addedMass;",
+                " accelerationRelaxationType addedMass; addedMass learnt;",
                 Ma,
                 3
             ),

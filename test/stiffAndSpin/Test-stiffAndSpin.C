@@ -175,6 +175,51 @@ void stiffSpring()
         );
     }
 
+    // omega dt 3 with addedMass (its default form, no fluid): Newton's
+    // step with the solve's own Jacobian (beta dt^2 k, by finite
+    // differences) lands on the implicit answer in one solve: the
+    // trapezoidal rule from nIter 1 on, and further solves keep it
+    for (const label nIter : {1, 3})
+    {
+        const scalar wdt3 = 3, dt3 = wdt3/w;
+        const label n3 = 105;
+        autoPtr<RBD::rigidBodyMotion> motion = test::motion
+        (
+            springText
+            (
+                "type Newmark;", nIter,
+                "accelerationRelaxationType addedMass;"
+                " accelerationRelaxation 0.7;"
+            )
+        );
+        scalar maxX = 0;
+        test::run
+        (
+            motion(), dt3, n3,
+            [&](RBD::rigidBodyMotion& mo)
+            {
+                maxX = max(maxX, mag(mo.state().q()[0])/x0);
+            }
+        );
+        const scalar theta = 2*std::atan(0.5*wdt3);
+        const std::string what
+        (
+            "stiff spring omega dt 3, Newmark nIter " + std::to_string(nIter)
+          + " with addedMass: "
+        );
+        checkRange
+        (
+            maxX, 0, 1 + 1e-6,
+            what + "bounded over 50 periods (max |x|/x0, tol 1e-6)"
+        );
+        checkAbs
+        (
+            motion->state().q()[0], x0*std::cos(n3*theta), 1e-6*x0,
+            what + "x of the trapezoidal rule's rotation after 50 periods"
+            " (tol 1e-6 x0)"
+        );
+    }
+
     // Newmark, nIter 1 (the explicit predictor-corrector): bounded
     {
         autoPtr<RBD::rigidBodyMotion> motion =

@@ -86,6 +86,65 @@ void Foam::RBD::rigidBodyMotion::evaluate(rigidBodyModelState& state)
 }
 
 
+void Foam::RBD::rigidBodyMotion::solveJacobian
+(
+    const rigidBodyModelState& state,
+    const bool firstSolve
+)
+{
+    scalar wq = 0, wqDot = 0;
+    solver_->accelerationWeights(state.deltaT(), firstSolve, wq, wqDot);
+
+    solveJacobian_ = Zero;
+    if (wq <= 0 && wqDot <= 0)
+    {
+        return;
+    }
+
+    // A change h of an acceleration moves q by wq h and qDot by wqDot h:
+    // h such that q moves by 1e-7 (m or rad), or qDot by 1e-7 where q
+    // does not move
+    const scalar h = 1e-7/(wq > 0 ? wq : wqDot);
+
+    // H (a + h e_j) - H a for each j, then -H (da_j)/h: the mass matrix
+    // of the state, from the model
+    const label n = model_.nDoF();
+    for (label j = 0; j < n; ++j)
+    {
+        stateFD_ = state;
+        dqFD_ = Zero;
+        dqFD_[j] = wq*h;
+        model_.integrate(stateFD_.q(), state.q(), dqFD_);
+        stateFD_.qDot()[j] += wqDot*h;
+
+        evaluate(stateFD_);
+
+        for (label i = 0; i < n; ++i)
+        {
+            solveJacobian_(i, j) =
+                (stateFD_.qDdot()[i] - state.qDdot()[i])/h;
+        }
+    }
+
+    // The accelerations' Jacobian J, made -H J
+    model_.massMatrix(state, ws_, massMatrix_);
+    wsValid_ = false;
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            scalar v = 0;
+            for (label k = 0; k < n; ++k)
+            {
+                v -= massMatrix_(i, k)*solveJacobian_(k, j);
+            }
+            HJ_(i, j) = v;
+        }
+    }
+    solveJacobian_ = HJ_;
+}
+
+
 void Foam::RBD::rigidBodyMotion::accelerations
 (
     rigidBodyModelState& state,
@@ -99,6 +158,12 @@ void Foam::RBD::rigidBodyMotion::accelerations
     }
 
     evaluate(state);
+
+    if (coupling_->usesSolveJacobian())
+    {
+        solveJacobian(state, firstSolve);
+        coupling_->setSolveJacobian(solveJacobian_);
+    }
 
     coupling_->relax(state, qDdotGiven_, state.qDdot(), firstSolve);
 }
@@ -208,7 +273,12 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
     tauTotal_(model_.nDoF(), Zero),
     fxTotal_(model_.nBodies(), Zero),
     qDdotGiven_(model_.nDoF(), Zero),
-    qDdotExternal_(model_.nDoF(), Zero)
+    qDdotExternal_(model_.nDoF(), Zero),
+    stateFD_(state_),
+    dqFD_(model_.nDoF(), Zero),
+    solveJacobian_(model_.nDoF(), Zero),
+    massMatrix_(model_.nDoF(), Zero),
+    HJ_(model_.nDoF(), Zero)
 {
     readRestraints(dict);
     model_.checkState(state_.q(), dict);

@@ -64,6 +64,8 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
 :
     couplingScheme(dict, model),
     A_(model.nDoF(), Zero),
+    K_(model.nDoF(), Zero),
+    hasK_(false),
     P_(model.nDoF(), Zero),
     Q_(model.nDoF(), Zero),
     forgetting_(0.9),
@@ -184,12 +186,14 @@ Foam::scalar Foam::RBD::couplingSchemes::addedMass::normH
 bool Foam::RBD::couplingSchemes::addedMass::newtonStep
 (
     const scalarField& aGiven,
-    scalarField& a
+    scalarField& a,
+    const bool withK,
+    const scalar aScale
 )
 {
     const label n = H_.m();
 
-    // H + A, and H (a - aGiven)
+    // H + aScale A (+ K), and H (a - aGiven)
     for (label i = 0; i < n; ++i)
     {
         r_[i] = a[i] - aGiven[i];
@@ -200,7 +204,8 @@ bool Foam::RBD::couplingSchemes::addedMass::newtonStep
         for (label j = 0; j < n; ++j)
         {
             b_[i] += H_(i, j)*r_[j];
-            M_(i, j) = H_(i, j) + A_(i, j);
+            M_(i, j) =
+                H_(i, j) + aScale*A_(i, j) + (withK ? K_(i, j) : 0);
         }
     }
 
@@ -313,25 +318,20 @@ void Foam::RBD::couplingSchemes::addedMass::update()
 }
 
 
-// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
-
-void Foam::RBD::couplingSchemes::addedMass::correct
+void Foam::RBD::couplingSchemes::addedMass::learn
 (
-    const rigidBodyModelState& state,
     const scalarField& aGiven,
-    scalarField& a,
+    const scalarField& a,
     const bool firstSolve
 )
 {
     const label n = A_.m();
 
-    massMatrix(state);
-
-    // Learn from the previous solve of the step, where the accelerations
-    // given changed enough to tell the forces' answer from their noise
-    // (not from the first solve of all: the fluid at rest it was given had
-    // answered no acceleration)
-    if (!fromFluid_ && !firstSolve && nSolves_ >= 2)
+    // From the previous solve of the step, where the accelerations given
+    // changed enough to tell the forces' answer from their noise (not from
+    // the first solve of all: the fluid at rest it was given had answered
+    // no acceleration)
+    if (!firstSolve && nSolves_ >= 2)
     {
         for (label i = 0; i < n; ++i)
         {
@@ -342,12 +342,13 @@ void Foam::RBD::couplingSchemes::addedMass::correct
         const scalar sH = normH(s_);
         if (sH > 1e-6*max(normH(aGiven), normH(a)) && sH > VSMALL)
         {
+            // y less the part the solve's own Jacobian explains
             for (label i = 0; i < n; ++i)
             {
                 y_[i] = 0;
                 for (label j = 0; j < n; ++j)
                 {
-                    y_[i] -= H_(i, j)*r_[j];
+                    y_[i] -= H_(i, j)*r_[j] + K_(i, j)*s_[j];
                 }
             }
             update();
@@ -357,23 +358,83 @@ void Foam::RBD::couplingSchemes::addedMass::correct
     aGivenPrev_ = aGiven;
     aNewPrev_ = a;
     ++nSolves_;
+}
 
-    if (learnt_ && newtonStep(aGiven, a))
+
+void Foam::RBD::couplingSchemes::addedMass::newtonResidual
+(
+    const scalarField& aGiven,
+    const scalarField& a
+)
+{
+    // How far from the coupled answer the accelerations given were: the
+    // length of Newton's step, x_ (the solve's change of the accelerations
+    // overstates it by (H + A)/H)
+    scalar x2 = 0;
+    forAll(x_, i)
     {
-        // The residual: how far from the coupled answer the accelerations
-        // given were, the length of Newton's step (the solve's change of
-        // the accelerations overstates it by (H + A)/H)
-        scalar x2 = 0;
-        for (label i = 0; i < n; ++i)
-        {
-            x2 += sqr(x_[i]);
-        }
-        residual_ = relativeSize(sqrt(x2), a, aGiven);
+        x2 += sqr(x_[i]);
+    }
+    residual_ = relativeSize(sqrt(x2), a, aGiven);
+}
 
-        // The fraction accelerationRelaxation of Newton's step: the stock
-        // scheme where the added mass is small, and where it is not an
-        // error that shrinks by (1 - omega) per solve whatever the density
-        for (label i = 0; i < n; ++i)
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::RBD::couplingSchemes::addedMass::correct
+(
+    const rigidBodyModelState& state,
+    const scalarField& aGiven,
+    scalarField& a,
+    const bool firstSolve
+)
+{
+    massMatrix(state);
+
+    if (useFluid_)
+    {
+        // The fluid's added mass (if a mesh motion gave it), divided by the
+        // relaxation, and the solve's Jacobian: the whole step, exact for a
+        // stiff restraint's share, damped for the fluid's
+        if
+        (
+            (fromFluid_ || hasK_)
+         && (
+                newtonStep(aGiven, a, hasK_, 1/relaxation_)
+             || newtonStep(aGiven, a, false, 1/relaxation_)
+            )
+        )
+        {
+            newtonResidual(aGiven, a);
+        }
+        else
+        {
+            // Nothing known: the stock scheme
+            forAll(a, i)
+            {
+                a[i] = aGiven[i] + relaxation_*(a[i] - aGiven[i]);
+            }
+        }
+        return;
+    }
+
+    learn(aGiven, a, firstSolve);
+
+    // The fraction accelerationRelaxation of Newton's step with the learnt
+    // added mass (noisy, which the whole step would follow): the stock
+    // scheme where the added mass is small, and where it is not an error
+    // that shrinks by (1 - omega) per solve whatever the density
+    if
+    (
+        (learnt_ || hasK_)
+     && (
+            newtonStep(aGiven, a, hasK_, 1)
+         || (learnt_ && newtonStep(aGiven, a, false, 1))
+        )
+    )
+    {
+        newtonResidual(aGiven, a);
+        forAll(a, i)
         {
             a[i] = aGiven[i] + relaxation_*(a[i] - aGiven[i]);
         }
@@ -381,7 +442,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
     }
 
     // Not learnt yet: relaxed, the change capped at gravity's size
-    for (label i = 0; i < n; ++i)
+    forAll(a, i)
     {
         r_[i] = a[i] - aGiven[i];
     }
@@ -393,7 +454,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
         omega = gravityScale_/rH;
     }
 
-    for (label i = 0; i < n; ++i)
+    forAll(a, i)
     {
         a[i] = aGiven[i] + omega*r_[i];
     }
@@ -418,6 +479,25 @@ void Foam::RBD::couplingSchemes::addedMass::setFluidAddedMass
 }
 
 
+void Foam::RBD::couplingSchemes::addedMass::setSolveJacobian
+(
+    const scalarSquareMatrix& K
+)
+{
+    const label n = K_.m();
+
+    hasK_ = false;
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            K_(i, j) = 0.5*(K(i, j) + K(j, i));
+            hasK_ = hasK_ || K_(i, j) != 0;
+        }
+    }
+}
+
+
 void Foam::RBD::couplingSchemes::addedMass::relaxStart
 (
     const rigidBodyModelState& state0,
@@ -433,7 +513,7 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
     if (fromFluid_)
     {
         s_ = Zero;
-        if (newtonStep(s_, a))
+        if (newtonStep(s_, a, false, 1))
         {
             return;
         }

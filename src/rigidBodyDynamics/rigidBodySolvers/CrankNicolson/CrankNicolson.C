@@ -72,3 +72,16 @@ void Foam::RBD::rigidBodySolvers::CrankNicolson::solve
     f.accelerations(state, firstSolve);
     update(state0, state);
 }
+
+
+void Foam::RBD::rigidBodySolvers::CrankNicolson::accelerationWeights
+(
+    const scalar deltaT,
+    const bool,
+    scalar& wq,
+    scalar& wqDot
+) const
+{
+    wq = voc_*aoc_*sqr(deltaT);
+    wqDot = aoc_*deltaT;
+}

@@ -84,3 +84,16 @@ void Foam::RBD::rigidBodySolvers::Newmark::solve
     f.accelerations(state, firstSolve);
     update(state0, state);
 }
+
+
+void Foam::RBD::rigidBodySolvers::Newmark::accelerationWeights
+(
+    const scalar deltaT,
+    const bool,
+    scalar& wq,
+    scalar& wqDot
+) const
+{
+    wq = beta_*sqr(deltaT);
+    wqDot = gamma_*deltaT;
+}

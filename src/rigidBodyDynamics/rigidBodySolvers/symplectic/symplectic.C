@@ -62,3 +62,16 @@ void Foam::RBD::rigidBodySolvers::symplectic::solve
         qDot[i] = qDotHalf_[i] + 0.5*dt*qDdot[i];
     }
 }
+
+
+void Foam::RBD::rigidBodySolvers::symplectic::accelerationWeights
+(
+    const scalar deltaT,
+    const bool firstSolve,
+    scalar& wq,
+    scalar& wqDot
+) const
+{
+    wq = 0;
+    wqDot = firstSolve ? 0 : 0.5*deltaT;
+}
