@@ -16,7 +16,8 @@ Description
     else from the top level of constant/rigidBodyMotionDict; gravity is their
     g entry, or else constant/g; system/controlDict gives deltaT and endTime.
     Prints "Time = t" and the stock status block of every body named in
-    bodies, first for the initial state and then after every step.
+    bodies, first for the initial state and then after every step (with
+    -endOnly, after the last step only).
 
     Prints first "stock library: <path>", the real path of the shared object
     that holds the stock model's code, found with dladdr(), so that a test
@@ -97,8 +98,15 @@ int main(int argc, char *argv[])
         " librigidBodyDynamics, for comparison"
     );
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "endOnly",
+        "print the status at the start and the end only (for timing)"
+    );
 
     #include "setRootCase.H"
+
+    const bool endOnly = args.found("endOnly");
 
     const fileName lib(stockLibrary());
     Info<< "stock library: " << lib.c_str() << nl << endl;
@@ -162,7 +170,13 @@ int main(int argc, char *argv[])
             motion.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
         }
 
-        report();
+        const bool last =
+            runTime.value()
+          > runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        if (!endOnly || last)
+        {
+            report();
+        }
     }
 
     Info<< "End" << nl << endl;

@@ -15,20 +15,26 @@ Description
     Gravity is their g entry, or else constant/g.  system/controlDict gives
     deltaT, endTime and the write controls.
 
-    Prints "Time = t" and the status block of every body named in bodies
-    (merged bodies included), first for the initial state and then after
-    every step.  Writes, for every body, the table
+    Its output follows system/controlDict, as an OpenFOAM application's
+    does: at each write time (writeControl, writeInterval) the model state
+    is written to <time>/uniform/rigidBodyMotionState (a run started from a
+    written time, startFrom latestTime, continues from that state), every
+    body named in bodies (merged bodies included) gets a row in its table
         postProcessing/rigidBodySim/<startTime>/<body>.dat
-    of time, centre of rotation, orientation, linear and angular velocity,
+    (time, centre of rotation, orientation, linear and angular velocity,
     the body's joint positions q and velocities qDot, the restraints' force
-    and moment, and its kinetic and potential energy.  At every write time
-    the model state is written to <time>/uniform/rigidBodyMotionState; a run
-    started from a written time (startFrom latestTime) continues from that
-    state.  The time stepping, restart, status and tables are
-    Foam::RBD::rigidBodyDriver's, as for the mesh motion solver.
+    and moment, its kinetic and potential energy), and, with report on in
+    the coefficients, "Time = t" and the status block of every body are
+    printed; the start gets a row and, with report on, its status.  Nothing
+    is printed or written per step otherwise: a line of progress at most
+    every 5% of the run (time reached, steps per second, time left), and a
+    summary at the end (steps, solves, wall time, time per step).  With
+    -everyStep the status and a table row follow every step.  The time
+    stepping, restart, status and tables are Foam::RBD::rigidBodyDriver's,
+    as for the mesh motion solver.
 
 Usage
-    rigidBodySim [-case DIR]
+    rigidBodySim [-case DIR] [-everyStep]
 
 \*---------------------------------------------------------------------------*/
 
@@ -36,6 +42,7 @@ Usage
 #include "Time.H"
 #include "rigidBodyDriver.H"
 #include "rigidBodySimInput.H"
+#include "clockTime.H"
 
 using namespace Foam;
 
@@ -48,6 +55,12 @@ int main(int argc, char *argv[])
         "Runs a rigid-body model from its dictionary, with no fluid"
     );
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "everyStep",
+        "print the status of every body and write a table row after every"
+        " time step, not only at write times"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -62,6 +75,8 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
 
+    const bool everyStep = args.found("everyStep");
+
     RBD::rigidBodyDriver driver
     (
         runTime,
@@ -69,6 +84,7 @@ int main(int argc, char *argv[])
         "rigidBodySim",
         false
     );
+    driver.tableEveryStep(everyStep);
 
     const RBD::rigidBodyModel& model = driver.model();
 
@@ -88,23 +104,58 @@ int main(int argc, char *argv[])
         }
     };
 
-    report();
+    if (everyStep || driver.report())
+    {
+        report();
+    }
+
+    // Progress at most every 5% of the run
+    const scalar t0 = runTime.value();
+    const scalar span = max(runTime.endTime().value() - t0, VSMALL);
+    scalar nextProgress = 0.05;
+    label nSteps = 0;
+    label nSolves = 0;
+    clockTime clock;
 
     while (runTime.run())
     {
         ++runTime;
 
         driver.solve(noExternalForces);
+        ++nSteps;
+        nSolves += driver.motion().nSolves();
 
-        report();
+        if (everyStep || (driver.report() && runTime.writeTime()))
+        {
+            report();
+        }
 
         if (runTime.writeTime())
         {
             driver.writeState();
         }
+
+        const scalar done = (runTime.value() - t0)/span;
+        if (done >= nextProgress - SMALL && !everyStep)
+        {
+            const scalar wall = clock.elapsedTime();
+            const scalar left = done > 0 ? max(wall*(1 - done)/done, 0) : 0;
+            Info<< "rigidBodySim: t = " << runTime.timeName() << " s ("
+                << label(100*done + 0.5) << "%), " << nSteps << " steps, "
+                << label(wall > 0 ? nSteps/wall : 0) << " steps/s, about "
+                << 0.1*label(10*left + 0.5) << " s left" << endl;
+            while (nextProgress <= done + SMALL)
+            {
+                nextProgress += 0.05;
+            }
+        }
     }
 
-    Info<< "End" << nl << endl;
+    const scalar wall = clock.elapsedTime();
+    Info<< "rigidBodySim: " << nSteps << " steps, " << nSolves << " solves, "
+        << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
+        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step" << nl
+        << "End" << nl << endl;
 
     return 0;
 }

@@ -231,6 +231,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     motion_(motionDict(runTime, coeffs, externalForces), stateDict),
     report_(coeffs.getOrDefault<Switch>("report", false)),
     externalForces_(externalForces),
+    tableEveryStep_(true),
     curTimeIndex_(-1),
     couplingTolerance_
     (
@@ -324,7 +325,7 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     Pstream::scatter(motion_.state());
 
     // The row of the step is made from its last solve, when it is written
-    rowsPending_ = true;
+    rowsPending_ = tableEveryStep_ || time_.writeTime();
 }
 
 
