@@ -45,11 +45,18 @@ void Foam::RBD::rigidBodySolvers::symplectic::solve
     }
     integratePosition(state0, state);
 
-    // Velocities for the accelerations: the half step's at first, then the
-    // latest end-of-step estimate
+    // Velocities for the accelerations: at first the end-of-step ones
+    // predicted with the start's accelerations, qDot' + deltaT/2 qDdot0
+    // (within deltaT^2 of the end's, which keeps the scheme second order
+    // where the accelerations depend on qDot), then the latest end-of-step
+    // estimate
     if (firstSolve)
     {
-        state.qDot() = qDotHalf_;
+        scalarField& qDot = state.qDot();
+        forAll(qDot, i)
+        {
+            qDot[i] = qDotHalf_[i] + 0.5*dt*qDdot0[i];
+        }
     }
 
     f.accelerations(state, firstSolve);
