@@ -7,6 +7,9 @@ Description
     with exact or converged answers:
     - an undamped spring-mass (Pz joint, linearSpring): x(1 s) against
       x0 cos(omega t), omega = 5 rad/s, deltaT 0.02, 0.01, 0.005;
+    - two cuboids, one on the other, on Pz joints, held by undamped springs
+      at an angle, in gravity: q at 1 s against a run of Newmark with
+      nIter 4 at deltaT/64 of the finest;
     - a torque-free asymmetric body (composite Pxyz Rs, inertia (1 2 3),
       omega (0.5 5 0.5) rad/s): its orientation at 1 s against a run of
       Newmark with nIter 4 at deltaT/64 of the finest, deltaT 0.02, 0.01,
@@ -52,6 +55,37 @@ std::string topText(const std::string& solver, const label nIter)
         " qDot (0 0 0 0.5 5 0.5);";
 }
 
+std::string twoCuboidsText(const std::string& solver, const label nIter)
+{
+    // Two cuboids, the second on the first, each on a Pz joint, held by
+    // undamped springs at an angle to the joints
+    return
+        "g (0 0 -9.81); solver { " + solver + " } nIter "
+      + std::to_string(nIter) + ";"
+        " bodies {"
+        " b1 { type cuboid; parent root; mass 2; L (0.2 0.2 0.1);"
+        " centreOfMass (0 0 0); joint { type Pz; } }"
+        " b2 { type cuboid; parent b1; mass 1; L (0.1 0.1 0.1);"
+        " centreOfMass (0 0 0); transform (1 0 0 0 1 0 0 0 1) (0.5 0 0);"
+        " joint { type Pz; } } }"
+        " restraints {"
+        " s1 { type linearSpring; body b1; anchor (-1 0 0.6);"
+        " refAttachmentPt (0 0 0); stiffness 60; damping 0;"
+        " restLength 1; }"
+        " s2 { type linearSpring; body b2; anchor (1.3 0 -0.7);"
+        " refAttachmentPt (0 0 0); stiffness 40; damping 0;"
+        " restLength 0.9; } }"
+        " q (0.05 -0.1);";
+}
+
+//- q of the two cuboids at T with deltaT dt
+scalarField twoCuboidsQ(const std::string& solver, const label nIter, const scalar dt)
+{
+    autoPtr<RBD::rigidBodyMotion> m = test::motion(twoCuboidsText(solver, nIter));
+    test::runTo(m(), dt, 1);
+    return m->state().q();
+}
+
 //- The orientation of the top at T with deltaT dt
 tensor topOrientation(const std::string& solver, const label nIter, const scalar dt)
 {
@@ -85,6 +119,29 @@ int main(int argc, char *argv[])
             " halving deltaT 0.01 -> 0.005 (errors " + std::to_string(e[0])
           + ", " + std::to_string(e[1]) + ", " + std::to_string(e[2]) + ")"
         );
+    }
+
+    // Two cuboids on springs at an angle against a converged run
+    {
+        const scalarField ref(twoCuboidsQ("type Newmark;", 4, dts[2]/64));
+        for (const char* solver : solvers)
+        {
+            scalar e[3];
+            for (label i = 0; i < 3; ++i)
+            {
+                const scalarField q(twoCuboidsQ(solver, 1, dts[i]));
+                e[i] = Foam::sqrt(sqr(q[0] - ref[0]) + sqr(q[1] - ref[1]));
+            }
+            const scalar order = std::log2(e[1]/e[2]);
+            test::checkAbs
+            (
+                order, 2, 0.2,
+                std::string("two cuboids on springs at an angle, ") + solver
+              + " nIter 1: order by halving deltaT 0.01 -> 0.005 (errors "
+              + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ", "
+              + std::to_string(e[2]) + ")"
+            );
+        }
     }
 
     // Torque-free asymmetric body against a converged run
