@@ -132,6 +132,9 @@ int main(int argc, char *argv[])
 
         if (runTime.writeTime())
         {
+            // The time's own record (uniform/time), as a solver writes it,
+            // and the bodies' state
+            runTime.write();
             driver.writeState();
         }
 

@@ -55,7 +55,8 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
 
 Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
 (
-    const Time& runTime
+    const Time& runTime,
+    const dictionary& coeffs
 )
 {
     IOobject io
@@ -73,6 +74,29 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
     {
         Info<< "Restarting from " << io.objectPath() << nl << endl;
         return IOdictionary(io);
+    }
+
+    // A time a run has written (OpenFOAM's uniform/time) without the
+    // bodies' state: starting from the dictionary would silently put the
+    // bodies back where they started
+    const fileName timeDict(runTime.timePath()/"uniform"/"time");
+    if
+    (
+        isFile(timeDict)
+     && !coeffs.getOrDefault<Switch>("startFromDictionary", false)
+    )
+    {
+        FatalErrorInFunction
+            << "Restart from t = " << runTime.timeName() << ": the bodies'"
+            << " state " << io.objectPath() << " is missing or unreadable,"
+            << " but a run wrote this time (" << timeDict << " exists)."
+            << nl << "Starting from the dictionary's initial state would"
+            << " put the bodies back where they started." << nl
+            << "Restore the file, start from another written time, or, to"
+            << " start the bodies over from the dictionary on purpose, set"
+            << nl << "    startFromDictionary yes;" << nl
+            << "in the motion's coefficients." << nl
+            << exit(FatalError);
     }
 
     return dictionary();
@@ -280,7 +304,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     (
         runTime,
         coeffs,
-        restartState(runTime),
+        restartState(runTime, coeffs),
         name,
         externalForces
     )
