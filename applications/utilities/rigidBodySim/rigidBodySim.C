@@ -42,6 +42,7 @@ Usage
 #include "Time.H"
 #include "rigidBodyDriver.H"
 #include "rigidBodySimInput.H"
+#include "rigidBodySimControls.H"
 #include "clockTime.H"
 
 using namespace Foam;
@@ -63,6 +64,9 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    checkRunControls(args);
+
     #include "createTime.H"
 
     Sout.precision(IOstream::defaultPrecision());
@@ -72,6 +76,15 @@ int main(int argc, char *argv[])
         FatalIOErrorInFunction(runTime.controlDict())
             << "Entry deltaT " << runTime.deltaTValue()
             << " must be positive" << nl
+            << exit(FatalIOError);
+    }
+
+    if (!(runTime.value() < runTime.endTime().value()))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry endTime " << runTime.endTime().value() << " is not"
+            << " after the time the run starts from, " << runTime.timeName()
+            << ": nothing would run" << nl
             << exit(FatalIOError);
     }
 
