@@ -171,7 +171,7 @@ void Foam::fluidAddedMass::compute
         solverControls.add("solver", "PCG");
         solverControls.add("preconditioner", "DIC");
     }
-    solverControls.set("tolerance", 1e-6);
+    solverControls.set("tolerance", 1e-5);
     solverControls.set("relTol", 0);
 
     const wordList types(patchTypes());
@@ -300,11 +300,11 @@ bool Foam::fluidAddedMass::update
     }
     const scalar change = sqrt(d2/max(a2, VSMALL));
 
-    if (change < 0.01)
+    if (change < 0.02)
     {
         interval_ = min(2*interval_, 32);
     }
-    else if (change > 0.04)
+    else if (change > 0.08)
     {
         interval_ = max(interval_/2, 1);
     }
