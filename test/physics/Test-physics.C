@@ -117,14 +117,15 @@ void springMass()
         "damped spring-mass at t = 1 s, CrankNicolson, dt 1 ms"
     );
 
-    // Order of convergence: error ratio on halving dt
+    // Order of convergence: error ratio on halving dt (symplectic with one
+    // solve too: its damper is evaluated at the predicted end velocity)
     struct orderCase { const char* solver; label nIter; scalar lo, hi; };
     const orderCase cases[] =
     {
         {"Newmark", 1, 3.6, 4.4},
         {"CrankNicolson", 1, 3.6, 4.4},
         {"Newmark", 3, 3.6, 4.4},
-        {"symplectic", 1, 1.8, 2.2},
+        {"symplectic", 1, 3.6, 4.4},
         {"symplectic", 4, 3.6, 4.4}
     };
 

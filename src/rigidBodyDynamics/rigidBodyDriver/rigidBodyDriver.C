@@ -205,8 +205,9 @@ void Foam::RBD::rigidBodyDriver::writeRows()
         }
         os  << nl;
 
-        // On disk at least at every write time
-        if (time_.writeTime())
+        // On disk at least at every write time (the row's, written at the
+        // start of the next step)
+        if (rowsAtWriteTime_)
         {
             os.flush();
         }
@@ -267,6 +268,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     startTimeName_(runTime.timeName()),
     rows_(names_.size()),
     rowsPending_(false),
+    rowsAtWriteTime_(false),
     tau_(motion_.model().nDoF(), Zero),
     fx_(motion_.model().nBodies(), Zero),
     tauR_(motion_.model().nDoF(), Zero),
@@ -350,6 +352,7 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
 
     // The row of the step is made from its last solve, when it is written
     rowsPending_ = tableEveryStep_ || time_.writeTime();
+    rowsAtWriteTime_ = time_.writeTime();
 }
 
 

@@ -341,6 +341,7 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
     addedMassTimeIndex_(-1),
+    addedMassRamp_(-1),
     fx_(driver_.model().nBodies(), Zero)
 {
     Info<< "rigidBodyMotion: the rigid-body dynamics project's"
@@ -473,15 +474,17 @@ void Foam::rigidBodyMeshMotion::giveAddedMass()
         );
     }
 
+    // Given again when recomputed, or when the ramp has changed it
     const scalar ramp = driver_.motion().ramp(mesh().time().value());
     if
     (
         !addedMass_->update(driver_.model(), driver_.motion().state())
-     && ramp == 1
+     && ramp == addedMassRamp_
     )
     {
         return;
     }
+    addedMassRamp_ = ramp;
 
     // Scaled as the fluid's forces are, by the ramp
     scalarSquareMatrix A(addedMass_->A());
@@ -588,6 +591,7 @@ bool Foam::rigidBodyMeshMotion::read()
         // A new coupling scheme: give it the added mass at the next step
         addedMass_.clear();
         addedMassTimeIndex_ = -1;
+        addedMassRamp_ = -1;
         return driver_.read(coeffDict());
     }
 

@@ -66,6 +66,7 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     A_(model.nDoF(), Zero),
     K_(model.nDoF(), Zero),
     hasK_(false),
+    newK_(false),
     P_(model.nDoF(), Zero),
     Q_(model.nDoF(), Zero),
     forgetting_(0.9),
@@ -368,8 +369,9 @@ void Foam::RBD::couplingSchemes::addedMass::newtonResidual
 )
 {
     // How far from the coupled answer the accelerations given were: the
-    // length of Newton's step, x_ (the solve's change of the accelerations
-    // overstates it by (H + A)/H)
+    // length of the step taken, x_ (the solve's own change of the
+    // accelerations overstates it by (H + A + K)/H; with the fluid's added
+    // mass divided by omega the step is about omega times Newton's)
     scalar x2 = 0;
     forAll(x_, i)
     {
@@ -390,6 +392,23 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 )
 {
     massMatrix(state);
+
+    // K counts where it is more than the round-off of its finite
+    // differences against the mass matrix
+    if (newK_)
+    {
+        scalar kMax = 0, hMax = 0;
+        for (label i = 0; i < K_.m(); ++i)
+        {
+            hMax = max(hMax, mag(H_(i, i)));
+            for (label j = 0; j < K_.m(); ++j)
+            {
+                kMax = max(kMax, mag(K_(i, j)));
+            }
+        }
+        hasK_ = kMax > 1e-6*hMax;
+        newK_ = false;
+    }
 
     if (useFluid_)
     {
@@ -486,15 +505,14 @@ void Foam::RBD::couplingSchemes::addedMass::setSolveJacobian
 {
     const label n = K_.m();
 
-    hasK_ = false;
     for (label i = 0; i < n; ++i)
     {
         for (label j = 0; j < n; ++j)
         {
             K_(i, j) = 0.5*(K(i, j) + K(j, i));
-            hasK_ = hasK_ || K_(i, j) != 0;
         }
     }
+    newK_ = true;
 }
 
 
@@ -530,4 +548,11 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
             a[i] -= cut*aExternal[i];
         }
     }
+}
+
+
+void Foam::RBD::couplingSchemes::addedMass::write(Ostream& os) const
+{
+    couplingScheme::write(os);
+    os.writeEntry("addedMass", word(useFluid_ ? "fluid" : "learnt"));
 }
