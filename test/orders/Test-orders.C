@@ -94,6 +94,18 @@ tensor topOrientation(const std::string& solver, const label nIter, const scalar
     return m->X0(m->model().bodyID("top")).E();
 }
 
+//- Check that errors e at deltaT 0.02, 0.01 and 0.005 fall at second order
+void checkOrder(const std::string& what, const scalar e[3])
+{
+    test::checkAbs
+    (
+        std::log2(e[1]/e[2]), 2, 0.2,
+        what + " nIter 1: order by halving deltaT 0.01 -> 0.005 (errors "
+      + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ", "
+      + std::to_string(e[2]) + ")"
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -111,14 +123,7 @@ int main(int argc, char *argv[])
             test::runTo(m(), dts[i], 1);
             e[i] = mag(m->state().q()[0] - 0.1*std::cos(5.0));
         }
-        const scalar order = std::log2(e[1]/e[2]);
-        test::checkAbs
-        (
-            order, 2, 0.2,
-            std::string("spring-mass, ") + solver + " nIter 1: order by"
-            " halving deltaT 0.01 -> 0.005 (errors " + std::to_string(e[0])
-          + ", " + std::to_string(e[1]) + ", " + std::to_string(e[2]) + ")"
-        );
+        checkOrder(std::string("spring-mass, ") + solver, e);
     }
 
     // Two cuboids on springs at an angle against a converged run
@@ -132,14 +137,10 @@ int main(int argc, char *argv[])
                 const scalarField q(twoCuboidsQ(solver, 1, dts[i]));
                 e[i] = Foam::sqrt(sqr(q[0] - ref[0]) + sqr(q[1] - ref[1]));
             }
-            const scalar order = std::log2(e[1]/e[2]);
-            test::checkAbs
+            checkOrder
             (
-                order, 2, 0.2,
-                std::string("two cuboids on springs at an angle, ") + solver
-              + " nIter 1: order by halving deltaT 0.01 -> 0.005 (errors "
-              + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ", "
-              + std::to_string(e[2]) + ")"
+                std::string("two cuboids on springs at an angle, ") + solver,
+                e
             );
         }
     }
@@ -153,14 +154,7 @@ int main(int argc, char *argv[])
         {
             e[i] = mag(topOrientation(solver, 1, dts[i]) - ref);
         }
-        const scalar order = std::log2(e[1]/e[2]);
-        test::checkAbs
-        (
-            order, 2, 0.2,
-            std::string("torque-free top, ") + solver + " nIter 1: order by"
-            " halving deltaT 0.01 -> 0.005 (errors " + std::to_string(e[0])
-          + ", " + std::to_string(e[1]) + ", " + std::to_string(e[2]) + ")"
-        );
+        checkOrder(std::string("torque-free top, ") + solver, e);
     }
 
     return test::testResult();
