@@ -567,7 +567,13 @@ void checkModelJoint
             // Body velocity from its global transform alone
             const spatialVector vX
             (
-                velocityFromX(wsm.X0[b], ws0.X0[b], wsp.X0[b], hJ)
+                velocityFromX
+                (
+                    model.X0(b, wsm),
+                    model.X0(b, ws0),
+                    model.X0(b, wsp),
+                    hJ
+                )
             );
             const spatialVector& v = ws0.v[b];
             errV = max(errV, mag6(vX - v)/max(scalar(1), mag6(v)));
@@ -581,7 +587,11 @@ void checkModelJoint
             {
                 const Mat6 Xrel
                 (
-                    mult(plucker(ws0.X0[i]), pluckerInv(ws0.X0[i - 1]))
+                    mult
+                    (
+                        plucker(model.X0(i, ws0)),
+                        pluckerInv(model.X0(i - 1, ws0))
+                    )
                 );
                 a = mult(Xrel, a) + ws0.c[i];
             }
@@ -965,10 +975,14 @@ void checkEnergyBalance
         List<spatialVector> vGlobal(nb, Zero);
         for (label i = 1; i < nb; ++i)
         {
-            const tensor ET(ws.X0[i].E().T());
+            const tensor ET(model.X0(i, ws).E().T());
             const vector w(ET & ws.v[i].w());
             vGlobal[i] =
-                spatialVector(w, (ET & ws.v[i].l()) - (w ^ ws.X0[i].r()));
+                spatialVector
+                (
+                    w,
+                    (ET & ws.v[i].l()) - (w ^ model.X0(i, ws).r())
+                );
         }
 
         scalar P = 0, sumMagP = 0;

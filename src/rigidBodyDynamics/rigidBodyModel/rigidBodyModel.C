@@ -38,7 +38,7 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
             << " joint)" << nl
             << exit(FatalError);
     }
-    I_.append(bodyPtr->spatial());
+    I_.append(rigidInertia(*bodyPtr));
     givenJoints_.append(nullptr);
     givenParent_.append(parentID);
     givenXT_.append(XT);
@@ -46,6 +46,7 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
     joints_.append(jointPtr.ptr());
     lambda_.append(parentID);
     XT_.append(XT);
+    XTrotates_.append(XT.E() != tensor::I);
 
     return bodyID;
 }
@@ -362,7 +363,7 @@ Foam::label Foam::RBD::rigidBodyModel::merge
     rigidBodyInertia I(bodies_[master]);
     I.add(*bodyPtr, X);
     bodies_[master].setInertia(I);
-    I_[master] = I.spatial();
+    I_[master] = rigidInertia(I);
 
     const label id = mergedBodyOffset + mergedBodies_.size();
     bodyIDs_.insert(bodyPtr->name(), id);
@@ -486,6 +487,8 @@ Foam::spatialTransform Foam::RBD::rigidBodyModel::X0
     const rigidBodyModelWorkspace& ws
 ) const
 {
+    updateX0(ws);
+
     if (isMerged(bodyID))
     {
         const subBody& sb = mergedBody(bodyID);
@@ -512,6 +515,7 @@ Foam::spatialVector Foam::RBD::rigidBodyModel::v
     }
 
     const spatialVector& vb = ws.v[master];
+    updateX0(ws);
     const tensor ET(ws.X0[master].E().T());
 
     return spatialVector(ET & vb.w(), ET & (vb.l() + (vb.w() ^ pm)));

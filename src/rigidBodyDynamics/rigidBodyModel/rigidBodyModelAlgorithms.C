@@ -13,70 +13,6 @@ namespace
 {
     using namespace Foam;
 
-    //- Outer product a b^T of two spatial vectors
-    inline spatialTensor spatialOuter(const spatialVector& a, const spatialVector& b)
-    {
-        spatialTensor T;
-        for (direction i = 0; i < 6; ++i)
-        {
-            for (direction j = 0; j < 6; ++j)
-            {
-                T(i, j) = a[i]*b[j];
-            }
-        }
-        return T;
-    }
-
-    //- X^T I X: a spatial inertia in the parent's frame, by 3x3 blocks.
-    //  With I = [A B; B^T C] (A, C symmetric) and X = (E, r):
-    //      A' = E^T A E,  B' = E^T B E,  C' = E^T C E
-    //      X^T I X = [A' - B' rx + rx B'^T - rx C' rx,  B' + rx C';
-    //                 (B' + rx C')^T,                    C']
-    //  (rx the cross-product matrix of r): about a quarter of the work of
-    //  two dense 6x6 products
-    inline spatialTensor transformInertia
-    (
-        const spatialTransform& X,
-        const spatialTensor& I
-    )
-    {
-        const tensor A
-        (
-            I(0, 0), I(0, 1), I(0, 2),
-            I(1, 0), I(1, 1), I(1, 2),
-            I(2, 0), I(2, 1), I(2, 2)
-        );
-        const tensor B
-        (
-            I(0, 3), I(0, 4), I(0, 5),
-            I(1, 3), I(1, 4), I(1, 5),
-            I(2, 3), I(2, 4), I(2, 5)
-        );
-        const tensor C
-        (
-            I(3, 3), I(3, 4), I(3, 5),
-            I(4, 3), I(4, 4), I(4, 5),
-            I(5, 3), I(5, 4), I(5, 5)
-        );
-
-        const tensor& E = X.E();
-        const tensor ET(E.T());
-        const tensor rx(RBD::crossMatrix(X.r()));
-
-        const tensor Ap((ET & A) & E);
-        const tensor Bp((ET & B) & E);
-        const tensor Cp((ET & C) & E);
-
-        const tensor TR(Bp + (rx & Cp));
-        const tensor TL(Ap - (Bp & rx) + (rx & Bp.T()) - ((rx & Cp) & rx));
-
-        return spatialTensor
-        (
-            TL, TR,
-            TR.T(), Cp
-        );
-    }
-
     //- Inverse of the leading n x n block of D (n <= 3), padded with zeros
     inline tensor invD(const tensor& D, const label n)
     {
@@ -96,6 +32,90 @@ namespace
         }
         return inv(D);
     }
+
+    //- E v (transpose: E^T v) for a rotation E about the coordinate axis
+    //  k: with (i, j, k) cyclic, E_ii = E_jj = c and E_ij = -E_ji = s
+    template<direction k, bool transpose>
+    inline vector rotate(const tensor& E, const vector& v)
+    {
+        constexpr direction i = (k + 1) % 3;
+        constexpr direction j = (k + 2) % 3;
+        const scalar c = E(i, i);
+        const scalar s = transpose ? -E(i, j) : E(i, j);
+
+        vector Ev;
+        Ev[k] = v[k];
+        Ev[i] = c*v[i] + s*v[j];
+        Ev[j] = c*v[j] - s*v[i];
+        return Ev;
+    }
+
+    //- X & m for a motion vector m, given what X's rotation is (as
+    //  rigidBodyModel::XlambdaRotation): 14 multiplications about a
+    //  coordinate axis, 6 without rotation, 24 for any
+    template<direction k>
+    inline spatialVector motion(const spatialTransform& X, const spatialVector& m)
+    {
+        return spatialVector
+        (
+            rotate<k, false>(X.E(), m.w()),
+            rotate<k, false>(X.E(), m.l() - (X.r() ^ m.w()))
+        );
+    }
+
+    inline spatialVector transformMotion
+    (
+        const spatialTransform& X,
+        const label rotation,
+        const spatialVector& m
+    )
+    {
+        switch (rotation)
+        {
+            case 0: return motion<0>(X, m);
+            case 1: return motion<1>(X, m);
+            case 2: return motion<2>(X, m);
+            case 3: return spatialVector(m.w(), m.l() - (X.r() ^ m.w()));
+            default: return X & m;
+        }
+    }
+
+    //- X^T & f for a force f, given what X's rotation is
+    template<direction k>
+    inline spatialVector force(const spatialTransform& X, const spatialVector& f)
+    {
+        const vector ETfl(rotate<k, true>(X.E(), f.l()));
+        return spatialVector
+        (
+            rotate<k, true>(X.E(), f.w()) + (X.r() ^ ETfl),
+            ETfl
+        );
+    }
+
+    inline spatialVector transformForce
+    (
+        const spatialTransform& X,
+        const label rotation,
+        const spatialVector& f
+    )
+    {
+        switch (rotation)
+        {
+            case 0: return force<0>(X, f);
+            case 1: return force<1>(X, f);
+            case 2: return force<2>(X, f);
+            case 3: return spatialVector(f.w() + (X.r() ^ f.l()), f.l());
+            default: return X.T() & f;
+        }
+    }
+
+    //- Whether a spatial force is zero
+    inline bool isZero(const spatialVector& f)
+    {
+        return
+            f[0] == 0 && f[1] == 0 && f[2] == 0
+         && f[3] == 0 && f[4] == 0 && f[5] == 0;
+    }
 }
 
 
@@ -110,8 +130,8 @@ void Foam::RBD::rigidBodyModel::kinematics
     const scalarField& q = state.q();
     const scalarField& qDot = state.qDot();
 
-    ws.X0[0] = spatialTransform();
     ws.v[0] = Zero;
+    ws.X0valid = false;
 
     for (label i = 1; i < nBodies(); ++i)
     {
@@ -119,12 +139,45 @@ void Foam::RBD::rigidBodyModel::kinematics
         joints_[i].jcalc(J, q, qDot);
 
         const label p = lambda_[i];
+        spatialTransform& Xlambda = ws.Xlambda[i];
 
-        ws.Xlambda[i] = J.X & XT_[i];
-        ws.X0[i] = ws.Xlambda[i] & ws.X0[p];
-        ws.v[i] = (ws.Xlambda[i] & ws.v[p]) + J.v;
+        // Xlambda = XJ XT: a product of rotations only if XT rotates
+        if (XTrotates_[i])
+        {
+            Xlambda = J.X & XT_[i];
+        }
+        else
+        {
+            Xlambda.E() = J.X.E();
+            Xlambda.r() = XT_[i].r() + J.X.r();
+        }
+
+        ws.v[i] =
+            p
+          ? transformMotion(Xlambda, XlambdaRotation(i), ws.v[p]) + J.v
+          : J.v;
         ws.c[i] = J.c + (ws.v[i] ^ J.v);
     }
+}
+
+
+void Foam::RBD::rigidBodyModel::updateX0
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    if (ws.X0valid)
+    {
+        return;
+    }
+
+    ws.X0[0] = spatialTransform();
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        const label p = lambda_[i];
+        ws.X0[i] = p ? ws.Xlambda[i] & ws.X0[p] : ws.Xlambda[i];
+    }
+    ws.X0valid = true;
 }
 
 
@@ -143,38 +196,56 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
     {
         const spatialVector& v = ws.v[i];
         ws.IA[i] = I_[i];
-        ws.pA[i] = (v ^ *(I_[i] & v)) - (*ws.X0[i] & fx[i]);
+        ws.pA[i] = v ^ *(I_[i] & v);
+        if (!isZero(fx[i]))
+        {
+            updateX0(ws);
+            ws.pA[i] -= *ws.X0[i] & fx[i];
+        }
     }
 
-    // Articulated inertias and bias forces, leaves to root
+    // Articulated inertias and bias forces, leaves to root: Ia = IA -
+    // U D^-1 U^T and pa = pA + Ia c + U D^-1 u, taken to the parent
     for (label i = nb - 1; i > 0; --i)
     {
-        const joint::XSvc& J = ws.J[i];
-        const label n = joints_[i].nDoF();
-        const label qi = joints_[i].qIndex();
-        const spatialTensor& IA = ws.IA[i];
-        const spatialVector& pA = ws.pA[i];
+        const joint& Ji = joints_[i];
+        const label n = Ji.nDoF();
+        const label k = Ji.unitColumn();
+        const label qi = Ji.qIndex();
+        articulatedInertia& Ia = ws.IA[i];
+        spatialVector& pa = ws.pA[i];
+        FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
+        vector& u = ws.u[i];
 
-        // Ia = IA - U D^-1 U^T,  pa = pA + Ia c + U D^-1 u
-        spatialTensor Ia(IA);
-        spatialVector pa(pA);
-
-        if (n)
+        if (k >= 0)
         {
-            FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
-            tensor D(Zero);
-            vector& u = ws.u[i];
+            // S = e_k: U is IA's column k, D its diagonal entry.  Ia c =
+            // IA c - U D^-1 U^T c: IA c need not wait for the division
+            const spatialVector& c = ws.c[i];
+            U[0] = Ia.column(k);
+            const spatialVector IAc(Ia & c);
+            const scalar Dinv = 1/U[0][k];
+            ws.Dinv[i].xx() = Dinv;
+            u.x() = tau[qi] - pa[k];
 
-            for (label k = 0; k < n; ++k)
+            pa += IAc + U[0]*(Dinv*(u.x() - (U[0] && c)));
+            Ia.subtractOuter(Dinv, U[0]);
+        }
+        else if (n)
+        {
+            const joint::XSvc& J = ws.J[i];
+            tensor D(Zero);
+
+            for (label j = 0; j < n; ++j)
             {
-                U[k] = IA & J.S[k];
-                u[k] = tau[qi + k] - (J.S[k] && pA);
+                U[j] = Ia & J.S[j];
+                u[j] = tau[qi + j] - (J.S[j] && pa);
             }
             for (label j = 0; j < n; ++j)
             {
-                for (label k = 0; k < n; ++k)
+                for (label l = 0; l < n; ++l)
                 {
-                    D(j, k) = J.S[j] && U[k];
+                    D(j, l) = J.S[j] && U[l];
                 }
             }
 
@@ -183,23 +254,31 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
 
             for (label j = 0; j < n; ++j)
             {
-                spatialVector UDinv(Zero);
-                for (label k = 0; k < n; ++k)
+                spatialVector V(Zero);
+                for (label l = 0; l < n; ++l)
                 {
-                    UDinv += Dinv(j, k)*U[k];
+                    V += Dinv(j, l)*U[l];
                 }
-                Ia -= spatialOuter(UDinv, U[j]);
+                Ia.subtractSymmOuter(V, U[j]);
+            }
+
+            pa += Ia & ws.c[i];
+            for (label j = 0; j < n; ++j)
+            {
                 pa += U[j]*Dinvu[j];
             }
         }
-
-        pa += Ia & ws.c[i];
+        else
+        {
+            pa += Ia & ws.c[i];
+        }
 
         const label p = lambda_[i];
         if (p)
         {
-            ws.IA[p] += transformInertia(ws.Xlambda[i], Ia);
-            ws.pA[p] += ws.Xlambda[i].T() & pa;
+            const label rotation = XlambdaRotation(i);
+            Ia.transformAddTo(ws.Xlambda[i], ws.IA[p], rotation);
+            ws.pA[p] += transformForce(ws.Xlambda[i], rotation, pa);
         }
     }
 
@@ -209,30 +288,39 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
 
     for (label i = 1; i < nb; ++i)
     {
-        const joint::XSvc& J = ws.J[i];
-        const label n = joints_[i].nDoF();
-        const label qi = joints_[i].qIndex();
+        const joint& Ji = joints_[i];
+        const label n = Ji.nDoF();
+        const label k = Ji.unitColumn();
+        const label qi = Ji.qIndex();
+        const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
 
-        spatialVector a((ws.Xlambda[i] & ws.a[lambda_[i]]) + ws.c[i]);
+        spatialVector& a = ws.a[i];
+        a =
+            transformMotion(ws.Xlambda[i], XlambdaRotation(i), ws.a[lambda_[i]])
+          + ws.c[i];
 
-        if (n)
+        if (k >= 0)
         {
-            const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
+            const scalar qDdoti = ws.Dinv[i].xx()*(ws.u[i].x() - (U[0] && a));
+            qDdot[qi] = qDdoti;
+            a[k] += qDdoti;
+        }
+        else if (n)
+        {
+            const joint::XSvc& J = ws.J[i];
             vector uUa(Zero);
-            for (label k = 0; k < n; ++k)
+            for (label j = 0; j < n; ++j)
             {
-                uUa[k] = ws.u[i][k] - (U[k] && a);
+                uUa[j] = ws.u[i][j] - (U[j] && a);
             }
             const vector qDdoti(ws.Dinv[i] & uUa);
 
-            for (label k = 0; k < n; ++k)
+            for (label j = 0; j < n; ++j)
             {
-                qDdot[qi + k] = qDdoti[k];
-                a += J.S[k]*qDdoti[k];
+                qDdot[qi + j] = qDdoti[j];
+                a += J.S[j]*qDdoti[j];
             }
         }
-
-        ws.a[i] = a;
     }
 }
 
@@ -280,7 +368,12 @@ void Foam::RBD::rigidBodyModel::inverseDynamics
 
         const spatialVector& v = ws.v[i];
         ws.pA[i] =
-            (I_[i] & a) + (v ^ *(I_[i] & v)) - (*ws.X0[i] & fx[i]);
+            (I_[i] & a) + (v ^ *(I_[i] & v));
+        if (!isZero(fx[i]))
+        {
+            updateX0(ws);
+            ws.pA[i] -= *ws.X0[i] & fx[i];
+        }
     }
 
     // Joint forces, leaves to root
@@ -326,7 +419,12 @@ void Foam::RBD::rigidBodyModel::massMatrix
         const label p = lambda_[i];
         if (p)
         {
-            ws.IA[p] += transformInertia(ws.Xlambda[i], ws.IA[i]);
+            ws.IA[i].transformAddTo
+            (
+                ws.Xlambda[i],
+                ws.IA[p],
+                XlambdaRotation(i)
+            );
         }
     }
 

@@ -5,6 +5,8 @@ Foam::RBD::rigidBodyModelWorkspace::rigidBodyModelWorkspace
 (
     const rigidBodyModel& model
 )
+:
+    X0valid(false)
 {
     resize(model);
 }
@@ -17,10 +19,11 @@ void Foam::RBD::rigidBodyModelWorkspace::resize(const rigidBodyModel& model)
     J.setSize(n);
     Xlambda.setSize(n);
     X0.setSize(n);
+    X0valid = false;
     v.setSize(n, Zero);
     a.setSize(n, Zero);
     c.setSize(n, Zero);
-    IA.setSize(n, Zero);
+    IA.setSize(n);
     pA.setSize(n, Zero);
     U.setSize(n);
     Dinv.setSize(n, Zero);

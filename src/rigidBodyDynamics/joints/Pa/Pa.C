@@ -19,14 +19,20 @@ Foam::RBD::joints::Pa::Pa(const vector& axis)
 :
     joint(1),
     axis_(axis/mag(axis))
-{}
+{
+    const label k = coordinateAxis(axis_);
+    unitColumn_ = k < 0 ? -1 : 3 + k;
+}
 
 
 Foam::RBD::joints::Pa::Pa(const dictionary& dict)
 :
     joint(1),
     axis_(readAxis(dict, "axis"))
-{}
+{
+    const label k = coordinateAxis(axis_);
+    unitColumn_ = k < 0 ? -1 : 3 + k;
+}
 
 
 Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Pa::clone() const

@@ -19,14 +19,18 @@ Foam::RBD::joints::Ra::Ra(const vector& axis)
 :
     joint(1),
     axis_(axis/mag(axis))
-{}
+{
+    unitColumn_ = coordinateAxis(axis_);
+}
 
 
 Foam::RBD::joints::Ra::Ra(const dictionary& dict)
 :
     joint(1),
     axis_(readAxis(dict, "axis"))
-{}
+{
+    unitColumn_ = coordinateAxis(axis_);
+}
 
 
 Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Ra::clone() const
@@ -42,7 +46,24 @@ void Foam::RBD::joints::Ra::jcalc
     const scalarField& qDot
 ) const
 {
-    J.X = spatialTransform(Foam::Ra(axis_, q[qIndex_]), Zero);
+    const scalar angle = q[qIndex_];
+
+    // About a coordinate axis the rotation is written out (Foam::Ra's
+    // values for that axis)
+    if (unitColumn_ < 0)
+    {
+        J.X = spatialTransform(Foam::Ra(axis_, angle), Zero);
+    }
+    else
+    {
+        const scalar s = std::sin(angle);
+        const scalar c = std::cos(angle);
+        J.X.r() = Zero;
+        J.X.E() =
+            unitColumn_ == 0 ? tensor(1, 0, 0, 0, c, s, 0, -s, c)
+          : unitColumn_ == 1 ? tensor(c, 0, -s, 0, 1, 0, s, 0, c)
+          : tensor(c, s, 0, -s, c, 0, 0, 0, 1);
+    }
     J.S[0] = spatialVector(axis_, Zero);
     J.v = qDot[qIndex_]*J.S[0];
     J.c = Zero;

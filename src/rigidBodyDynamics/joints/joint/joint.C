@@ -13,8 +13,27 @@ namespace RBD
 Foam::RBD::joint::joint(const label nDoF)
 :
     nDoF_(nDoF),
-    qIndex_(0)
+    qIndex_(0),
+    unitColumn_(-1)
 {}
+
+
+Foam::label Foam::RBD::joint::coordinateAxis(const vector& axis)
+{
+    for (direction k = 0; k < 3; ++k)
+    {
+        if
+        (
+            axis[k] == 1
+         && axis[(k + 1) % 3] == 0
+         && axis[(k + 2) % 3] == 0
+        )
+        {
+            return k;
+        }
+    }
+    return -1;
+}
 
 
 Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joint::New(const dictionary& dict)

@@ -54,7 +54,7 @@ void Foam::RBD::restraints::prescribedRotation::restrain
     }
 
     // Moment of inertia about the axis through the centre of mass
-    const tensor& E = model_.X0(masterID_, ws).E();
+    const tensor E(model_.X0(masterID_, ws).E());
     const vector aBody(E & axis_);
     const scalar Ia = aBody & (model_.bodies()[masterID_].Ic() & aBody);
 
