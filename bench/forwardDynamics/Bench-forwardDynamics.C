@@ -3,69 +3,172 @@ Application
     Bench-forwardDynamics (ours), Bench-forwardDynamics-stock (stock)
 
 Description
-    Time of one forward-dynamics call (restraints included) on chains of
-    revolute links and on a floating body on a spring.  The same source is
-    built against our library and, with -DSTOCK, against the stock one
-    (run with /usr/lib's library by bench/run).  Prints one line per model:
-        <model> <nDoF> <ns per call> <sum of qDdot (checksum)>
+    Time of one forward-dynamics call (kinematics, restraints and the
+    articulated-body algorithm) and of one whole time step (Newmark,
+    nIter 1, through rigidBodyMotion::solve) on:
+    - chainN: N revolute links (Rx and Ry in turn), N = 1, 10, 100, 1000;
+    - floatingBase: a body on a floating joint with four legs of six
+      revolute links each (30 degrees of freedom);
+    - floatingSpring: a cuboid on Py + Ry held by a linearSpring.
+    The same source is built against our library and, with -DSTOCK,
+    against the stock one (run with /usr/lib's library by bench/run).
+    Prints one line per model:
+        <model> <nDoF> <ns per call> <sum of qDdot> <ns per step>
+    (a step: the state set to that after a first step, newTime() and
+    solve(), so every step starts from the same state)
+    (the checksum after the calls, all at the same state, so the two
+    libraries' agree to round-off).  -quick: a fifth of the calls.
 
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
 #include "Time.H"
 #include "IStringStream.H"
+#include "rigidBodyMotion.H"
 #include <chrono>
+#include <cmath>
 #include <string>
 
-#ifdef STOCK
-    #include "rigidBodyModel.H"
-    #include "rigidBodyModelState.H"
-#else
-    #include "rigidBodyModel.H"
+#ifndef STOCK
     #include "rigidBodyRestraint.H"
 #endif
 
 using namespace Foam;
+
+//- q and qDot entries: q_i = 0.1 sin(i + 1), qDot_i = 0.2 cos(i + 1)
+std::string stateEntries(const label nDoF)
+{
+    std::string q, qDot;
+    for (label i = 0; i < nDoF; ++i)
+    {
+        q += " " + std::to_string(0.1*std::sin(i + 1.0));
+        qDot += " " + std::to_string(0.2*std::cos(i + 1.0));
+    }
+    return "q (" + q + "); qDot (" + qDot + ");";
+}
+
+
+//- A link of a chain: body NAME on PARENT, 1 kg, 0.5 m long
+std::string link
+(
+    const std::string& name,
+    const std::string& parent,
+    const std::string& offset,
+    const char* joint
+)
+{
+    return
+        name + " { type rigidBody; parent " + parent + "; mass 1;"
+        " centreOfMass (0.01 0 -0.25); inertia (0.02 0 0 0.021 0 0.01);"
+        " transform (1 0 0 0 1 0 0 0 1) " + offset + "; joint { type "
+      + joint + "; } } ";
+}
+
 
 std::string chain(const label n)
 {
     std::string bodies;
     for (label i = 0; i < n; ++i)
     {
-        bodies +=
-            "l" + std::to_string(i) + " { type rigidBody; parent "
-          + (i ? "l" + std::to_string(i - 1) : std::string("root"))
-          + "; mass 1; centreOfMass (0.01 0 -0.25);"
-            " inertia (0.02 0 0 0.021 0 0.01);"
-            " transform (1 0 0 0 1 0 0 0 1) (0 0 "
-          + (i ? "-0.5" : "0") + "); joint { type "
-          + (i % 2 ? "Rx" : "Ry") + "; } } ";
+        bodies += link
+        (
+            "l" + std::to_string(i),
+            i ? "l" + std::to_string(i - 1) : std::string("root"),
+            i ? "(0 0 -0.5)" : "(0 0 0)",
+            i % 2 ? "Rx" : "Ry"
+        );
     }
-    return "g (0 0 -9.81); bodies { " + bodies + "}";
+    return
+        "g (0 0 -9.81); solver { type Newmark; } bodies { " + bodies + "} "
+      + stateEntries(n);
+}
+
+
+std::string floatingBase()
+{
+    std::string bodies =
+        "base { type cuboid; parent root; mass 20; L (0.8 0.4 0.2);"
+        " centreOfMass (0 0 0); transform (1 0 0 0 1 0 0 0 1) (0 0 1);"
+        " joint { type floating; } } ";
+
+    const char* hips[] =
+        {"(0.4 0.2 0)", "(0.4 -0.2 0)", "(-0.4 0.2 0)", "(-0.4 -0.2 0)"};
+    const char* joints[] = {"Rz", "Rx", "Ry", "Ry", "Rx", "Ry"};
+
+    for (label leg = 0; leg < 4; ++leg)
+    {
+        for (label j = 0; j < 6; ++j)
+        {
+            const std::string name =
+                "leg" + std::to_string(leg) + "_" + std::to_string(j);
+            bodies += link
+            (
+                name,
+                j ? "leg" + std::to_string(leg) + "_" + std::to_string(j - 1)
+                  : std::string("base"),
+                j ? "(0 0 -0.5)" : hips[leg],
+                joints[j]
+            );
+        }
+    }
+    return
+        "g (0 0 -9.81); solver { type Newmark; } bodies { " + bodies + "} "
+      + stateEntries(6 + 24);
 }
 
 
 const char* floater =
-    "g (0 0 -9.81);"
+    "g (0 0 -9.81); solver { type Newmark; }"
     "bodies { floater { type cuboid; parent root; mass 15;"
     " L (0.3 0.2 0.5); centreOfMass (0 0 0.25);"
     " transform (1 0 0 0 1 0 0 0 1) (0.5 0.45 0.1);"
     " joint { type composite; joints ({ type Py; } { type Ry; }); } } }"
     "restraints { spring { type linearSpring; body floater;"
     " anchor (0.5 0.45 0); refAttachmentPt (0 0 0); stiffness 100;"
-    " damping 1; restLength 0.1; } }";
+    " damping 1; restLength 0.1; } }"
+    "q (0.0841470984808 0.0909297426826);"
+    "qDot (0.108060461174 -0.0832293673094);";
+
+
+//- The best time per call [ns] of nCalls calls of f, over 5 repeats
+template<class Function>
+double bestTime(const label nCalls, const Function& f)
+{
+    double best = GREAT;
+    for (label repeat = 0; repeat < 5; ++repeat)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        for (label call = 0; call < nCalls; ++call)
+        {
+            f();
+        }
+        const auto stop = std::chrono::steady_clock::now();
+        best = min
+        (
+            best,
+            std::chrono::duration<double, std::nano>(stop - start).count()
+           /nCalls
+        );
+    }
+    return best;
+}
 
 
 int main(int argc, char *argv[])
 {
+    argList::addBoolOption("quick", "a fifth of the calls");
     #include "setRootCase.H"
     #include "createTime.H"
+
+    const label divisor = args.found("quick") ? 5 : 1;
 
     const std::pair<std::string, std::string> models[] =
     {
         {"chain1", chain(1)},
         {"chain10", chain(10)},
-        {"chain30", chain(30)},
+        {"chain100", chain(100)},
+        {"chain1000", chain(1000)},
+        {"floatingBase", floatingBase()},
         {"floatingSpring", floater}
     };
 
@@ -75,45 +178,32 @@ int main(int argc, char *argv[])
         const dictionary dict(is);
 
         #ifdef STOCK
-        RBD::rigidBodyModel m(runTime, dict);
-        m.g() = dict.get<vector>("g");
-        RBD::rigidBodyModelState state(m);
+        RBD::rigidBodyMotion motion(runTime, dict);
+        motion.g() = dict.get<vector>("g");
+        const RBD::rigidBodyModel& m = motion;
+        RBD::rigidBodyModelState state(m, dict);
         #else
-        RBD::rigidBodyModel m(dict);
-        RBD::rigidBodyModelState state(m.nDoF());
+        RBD::rigidBodyMotion motion(dict, dictionary());
+        const RBD::rigidBodyModel& m = motion.model();
+        RBD::rigidBodyModelState state(motion.state());
         RBD::rigidBodyModelWorkspace ws(m);
-        PtrList<RBD::restraint> restraints;
-        if (dict.found("restraints"))
-        {
-            for (const entry& e : dict.subDict("restraints"))
-            {
-                restraints.append
-                (
-                    RBD::restraint::New(e.keyword(), e.dict(), m)
-                );
-            }
-        }
+        const PtrList<RBD::restraint>& restraints = motion.restraints();
         #endif
-
-        forAll(state.q(), i)
-        {
-            state.q()[i] = 0.1*std::sin(i + 1.0);
-            state.qDot()[i] = 0.2*std::cos(i + 1.0);
-        }
 
         const scalarField tau0(m.nDoF(), Zero);
         const Field<spatialVector> fx0(m.nBodies(), Zero);
         scalarField tau(tau0);
         Field<spatialVector> fx(fx0);
 
-        const label nCalls = max(label(2000), label(400000/m.nDoF()));
-        double best = GREAT;
-        scalar checksum = 0;
+        const label nCalls =
+            max(label(400), label(400000/m.nDoF()))/divisor;
 
-        for (label repeat = 0; repeat < 5; ++repeat)
-        {
-            const auto start = std::chrono::steady_clock::now();
-            for (label call = 0; call < nCalls; ++call)
+        // Forward dynamics at one state (qDot nudged so that no call can
+        // be skipped)
+        const double fd = bestTime
+        (
+            nCalls,
+            [&]()
             {
                 state.qDot()[0] += 1e-12;
                 tau = tau0;
@@ -131,18 +221,27 @@ int main(int argc, char *argv[])
                 m.articulatedBodyDynamics(tau, fx, ws, state.qDdot());
                 #endif
             }
-            const auto stop = std::chrono::steady_clock::now();
-            best = min
-            (
-                best,
-                std::chrono::duration<double, std::nano>(stop - start).count()
-               /nCalls
-            );
-            checksum = sum(state.qDdot());
-        }
+        );
+        const scalar checksum = sum(state.qDdot());
 
-        Info<< model.first.c_str() << ' ' << m.nDoF() << ' ' << best << ' '
-            << checksum << endl;
+        // A whole step of 1 ms, always from the state after a first step
+        // (so that a long chain does not fall far over the calls)
+        motion.newTime();
+        motion.solve(1e-3, 1e-3, tau0, fx0);
+        const RBD::rigidBodyModelState state1(motion.state());
+        const double step = bestTime
+        (
+            nCalls,
+            [&]()
+            {
+                motion.state() = state1;
+                motion.newTime();
+                motion.solve(2e-3, 1e-3, tau0, fx0);
+            }
+        );
+
+        Info<< model.first.c_str() << ' ' << m.nDoF() << ' ' << fd << ' '
+            << checksum << ' ' << step << endl;
     }
 
     return 0;

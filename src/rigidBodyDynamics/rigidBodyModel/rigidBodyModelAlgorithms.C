@@ -109,6 +109,59 @@ namespace
         }
     }
 
+    //- w x e_m, e_m the unit vector of coordinate axis m
+    template<direction m>
+    inline vector crossAxis(const vector& w)
+    {
+        constexpr direction i = (m + 1) % 3;
+        constexpr direction j = (m + 2) % 3;
+        vector we;
+        we[m] = 0;
+        we[i] = w[j];
+        we[j] = -w[i];
+        return we;
+    }
+
+    //- v x (qDot e_k): the velocity product of a joint of one degree of
+    //  freedom whose motion subspace is the unit spatial vector e_k: 4
+    //  multiplications instead of 18
+    template<direction k>
+    inline spatialVector crossUnit(const spatialVector& v, const scalar qDot)
+    {
+        if (k < 3)
+        {
+            return spatialVector
+            (
+                qDot*crossAxis<k % 3>(v.w()),
+                qDot*crossAxis<k % 3>(v.l())
+            );
+        }
+        return spatialVector(Zero, qDot*crossAxis<k % 3>(v.w()));
+    }
+
+    inline spatialVector velocityProduct
+    (
+        const RBD::joint::XSvc& J,
+        const label k,
+        const label nDoF,
+        const spatialVector& v
+    )
+    {
+        if (nDoF == 1)
+        {
+            switch (k)
+            {
+                case 0: return crossUnit<0>(v, J.v[0]);
+                case 1: return crossUnit<1>(v, J.v[1]);
+                case 2: return crossUnit<2>(v, J.v[2]);
+                case 3: return crossUnit<3>(v, J.v[3]);
+                case 4: return crossUnit<4>(v, J.v[4]);
+                case 5: return crossUnit<5>(v, J.v[5]);
+            }
+        }
+        return J.c + (v ^ J.v);
+    }
+
     //- Whether a spatial force is zero
     inline bool isZero(const spatialVector& f)
     {
@@ -156,7 +209,14 @@ void Foam::RBD::rigidBodyModel::kinematics
             p
           ? transformMotion(Xlambda, XlambdaRotation(i), ws.v[p]) + J.v
           : J.v;
-        ws.c[i] = J.c + (ws.v[i] ^ J.v);
+        ws.c[i] =
+            velocityProduct
+            (
+                J,
+                joints_[i].unitColumn(),
+                joints_[i].nDoF(),
+                ws.v[i]
+            );
     }
 }
 
@@ -217,7 +277,7 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
         FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
         vector& u = ws.u[i];
 
-        if (k >= 0)
+        if (k >= 0 && n == 1)
         {
             // S = e_k: U is IA's column k, D its diagonal entry.  Ia c =
             // IA c - U D^-1 U^T c: IA c need not wait for the division
@@ -229,23 +289,54 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
             u.x() = tau[qi] - pa[k];
 
             pa += IAc + U[0]*(Dinv*(u.x() - (U[0] && c)));
-            Ia.subtractOuter(Dinv, U[0]);
+            Ia.subtractOuter(Dinv*U[0], U[0]);
+
+            // For the accelerations: U a = U (Xlambda a_parent + c) =
+            // (Xlambda^T U) a_parent + U c, so that qDdot need not wait for
+            // Xlambda a_parent.  Kept in U and u: u - U c, Xlambda^T U
+            u.x() -= U[0] && c;
+            U[0] = transformForce(ws.Xlambda[i], XlambdaRotation(i), U[0]);
         }
         else if (n)
         {
             const joint::XSvc& J = ws.J[i];
             tensor D(Zero);
 
-            for (label j = 0; j < n; ++j)
+            if (k >= 0)
             {
-                U[j] = Ia & J.S[j];
-                u[j] = tau[qi + j] - (J.S[j] && pa);
-            }
-            for (label j = 0; j < n; ++j)
-            {
-                for (label l = 0; l < n; ++l)
+                // S = [e_k ...]: U is IA's columns, D a block of them
+                for (label j = 0; j < n; ++j)
                 {
-                    D(j, l) = J.S[j] && U[l];
+                    U[j] = Ia.column(k + j);
+                    u[j] = tau[qi + j] - pa[k + j];
+                }
+                for (label j = 0; j < n; ++j)
+                {
+                    for (label l = 0; l < n; ++l)
+                    {
+                        D(j, l) = U[l][k + j];
+                    }
+                }
+            }
+            else
+            {
+                // Columns of S that are purely angular (a revolute joint's)
+                // or linear take half the product
+                for (label j = 0; j < n; ++j)
+                {
+                    const spatialVector& S = J.S[j];
+                    U[j] =
+                        S.l() == vector::zero ? Ia.timesAngular(S.w())
+                      : S.w() == vector::zero ? Ia.timesLinear(S.l())
+                      : Ia & S;
+                    u[j] = tau[qi + j] - (S && pa);
+                }
+                for (label j = 0; j < n; ++j)
+                {
+                    for (label l = j; l < n; ++l)
+                    {
+                        D(j, l) = D(l, j) = J.S[j] && U[l];
+                    }
                 }
             }
 
@@ -259,7 +350,7 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
                 {
                     V += Dinv(j, l)*U[l];
                 }
-                Ia.subtractSymmOuter(V, U[j]);
+                Ia.subtractOuter(V, U[j]);
             }
 
             pa += Ia & ws.c[i];
@@ -294,19 +385,23 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
         const label qi = Ji.qIndex();
         const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
 
+        const spatialVector& ap = ws.a[lambda_[i]];
         spatialVector& a = ws.a[i];
-        a =
-            transformMotion(ws.Xlambda[i], XlambdaRotation(i), ws.a[lambda_[i]])
-          + ws.c[i];
 
-        if (k >= 0)
+        if (k >= 0 && n == 1)
         {
-            const scalar qDdoti = ws.Dinv[i].xx()*(ws.u[i].x() - (U[0] && a));
+            // U and u as the backward pass left them: Xlambda^T U, u - U c
+            const scalar qDdoti =
+                ws.Dinv[i].xx()*(ws.u[i].x() - (U[0] && ap));
             qDdot[qi] = qDdoti;
+            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap)
+              + ws.c[i];
             a[k] += qDdoti;
         }
-        else if (n)
+        else
         {
+            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap)
+              + ws.c[i];
             const joint::XSvc& J = ws.J[i];
             vector uUa(Zero);
             for (label j = 0; j < n; ++j)

@@ -17,13 +17,17 @@ namespace joints
 Foam::RBD::joints::Pxyz::Pxyz()
 :
     joint(3)
-{}
+{
+    unitColumn_ = 3;
+}
 
 
 Foam::RBD::joints::Pxyz::Pxyz(const dictionary&)
 :
     joint(3)
-{}
+{
+    unitColumn_ = 3;
+}
 
 
 Foam::autoPtr<Foam::RBD::joint> Foam::RBD::joints::Pxyz::clone() const
