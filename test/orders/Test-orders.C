@@ -6,21 +6,25 @@ Description
     The order of convergence of each solver, by halving deltaT, on problems
     with exact or converged answers:
     - an undamped spring-mass (Pz joint, linearSpring): x(1 s) against
-      x0 cos(omega t), omega = 5 rad/s, deltaT 0.02, 0.01, 0.005;
+      x0 cos(omega t), omega = 5 rad/s;
     - two cuboids, one on the other, on Pz joints, held by undamped springs
-      at an angle, in gravity: q at 1 s against a run of Newmark with
-      nIter 4 at deltaT/64 of the finest;
+      at an angle, in gravity: q at 1 s against a reference run;
     - a torque-free asymmetric body (composite Pxyz Rs, inertia (1 2 3),
-      omega (0.5 5 0.5) rad/s): its orientation at 1 s against a run of
-      Newmark with nIter 4 at deltaT/64 of the finest, deltaT 0.02, 0.01,
-      0.005.
-    The order is log2 of the ratio of the errors of the last two halvings;
-    every solver with one solve a step (nIter 1) is second order: within
-    0.2 of 2.
+      omega (0.5 5 0.5) rad/s): its orientation at 1 s against a reference
+      run.
+    The reference runs are RK4 at deltaT 1/6400 s, its error far below
+    the finest error measured (RK4's at 0.01 s); they are checked against
+    Newmark with nIter 4 at 1/12800 s.  The order is log2 of the ratio of
+    the errors of the last two halvings: the solvers with one solve a step
+    (nIter 1) at deltaT 0.02, 0.01, 0.005 are second order, within 0.2 of
+    2; RK4 at 0.04, 0.02, 0.01 (its errors at 0.005 near round-off on the
+    spring) is fourth order, within 0.3 of 4.
 \*---------------------------------------------------------------------------*/
 
 #include "testCheck.H"
 #include "testModels.H"
+#include <iomanip>
+#include <sstream>
 
 using namespace Foam;
 
@@ -29,8 +33,30 @@ using namespace Foam;
 namespace
 {
 
-const char* solvers[] =
-    {"type Newmark;", "type CrankNicolson;", "type symplectic;"};
+//- A solver, the time steps its order is measured at, and its order
+struct solverCase
+{
+    const char* solver;
+    scalar dt[3];
+    scalar order;
+    scalar tolerance;
+};
+
+const solverCase cases[] =
+{
+    {"type Newmark;", {0.02, 0.01, 0.005}, 2, 0.2},
+    {"type CrankNicolson;", {0.02, 0.01, 0.005}, 2, 0.2},
+    {"type symplectic;", {0.02, 0.01, 0.005}, 2, 0.2},
+    {"type RK4;", {0.04, 0.02, 0.01}, 4, 0.3}
+};
+
+//- The reference runs: solver, nIter, deltaT; and the cross-check's
+const char* refSolver = "type RK4;";
+const label refNIter = 1;
+const scalar refDt = 1.0/6400;
+const char* checkSolver = "type Newmark;";
+const label checkNIter = 4;
+const scalar checkDt = 1.0/12800;
 
 std::string springText(const std::string& solver)
 {
@@ -79,30 +105,68 @@ std::string twoCuboidsText(const std::string& solver, const label nIter)
 }
 
 //- q of the two cuboids at T with deltaT dt
-scalarField twoCuboidsQ(const std::string& solver, const label nIter, const scalar dt)
+scalarField twoCuboidsQ
+(
+    const std::string& solver,
+    const label nIter,
+    const scalar dt
+)
 {
-    autoPtr<RBD::rigidBodyMotion> m = test::motion(twoCuboidsText(solver, nIter));
+    autoPtr<RBD::rigidBodyMotion> m =
+        test::motion(twoCuboidsText(solver, nIter));
     test::runTo(m(), dt, 1);
     return m->state().q();
 }
 
 //- The orientation of the top at T with deltaT dt
-tensor topOrientation(const std::string& solver, const label nIter, const scalar dt)
+tensor topOrientation
+(
+    const std::string& solver,
+    const label nIter,
+    const scalar dt
+)
 {
     autoPtr<RBD::rigidBodyMotion> m = test::motion(topText(solver, nIter));
     test::runTo(m(), dt, 1);
     return m->X0(m->model().bodyID("top")).E();
 }
 
-//- Check that errors e at deltaT 0.02, 0.01 and 0.005 fall at second order
-void checkOrder(const std::string& what, const scalar e[3])
+//- x in scientific notation, 3 digits
+std::string sci(const scalar x)
+{
+    std::ostringstream os;
+    os << std::scientific << std::setprecision(2) << x;
+    return os.str();
+}
+
+//- Check that the errors e at the solver's three time steps fall at its
+//  order
+void checkOrder
+(
+    const std::string& what,
+    const solverCase& sc,
+    const scalar e[3]
+)
 {
     test::checkAbs
     (
-        std::log2(e[1]/e[2]), 2, 0.2,
-        what + " nIter 1: order by halving deltaT 0.01 -> 0.005 (errors "
-      + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ", "
-      + std::to_string(e[2]) + ")"
+        std::log2(e[1]/e[2]), sc.order, sc.tolerance,
+        what + ", " + sc.solver + " nIter 1: order by halving deltaT "
+      + std::to_string(sc.dt[1]) + " -> " + std::to_string(sc.dt[2])
+      + " (errors " + sci(e[0]) + ", " + sci(e[1]) + ", " + sci(e[2])
+      + ")"
+    );
+}
+
+//- Check that the reference run agrees with the cross-check's
+void checkReference(const std::string& what, const scalar difference)
+{
+    test::checkAbs
+    (
+        difference, 0, 5e-8,
+        what + ": reference (" + refSolver + " deltaT 1/6400) within 5e-8"
+        " of " + checkSolver + " nIter 4 deltaT 1/12800 (whose own error,"
+        " its error at 0.005 s over 64^2, is about 3e-8)"
     );
 }
 
@@ -111,50 +175,57 @@ void checkOrder(const std::string& what, const scalar e[3])
 
 int main(int argc, char *argv[])
 {
-    const scalar dts[] = {0.02, 0.01, 0.005};
-
     // Spring-mass against its exact answer
-    for (const char* solver : solvers)
+    for (const solverCase& sc : cases)
     {
         scalar e[3];
         for (label i = 0; i < 3; ++i)
         {
-            autoPtr<RBD::rigidBodyMotion> m = test::motion(springText(solver));
-            test::runTo(m(), dts[i], 1);
+            autoPtr<RBD::rigidBodyMotion> m =
+                test::motion(springText(sc.solver));
+            test::runTo(m(), sc.dt[i], 1);
             e[i] = mag(m->state().q()[0] - 0.1*std::cos(5.0));
         }
-        checkOrder(std::string("spring-mass, ") + solver, e);
+        checkOrder("spring-mass", sc, e);
     }
 
     // Two cuboids on springs at an angle against a converged run
     {
-        const scalarField ref(twoCuboidsQ("type Newmark;", 4, dts[2]/64));
-        for (const char* solver : solvers)
+        const scalarField ref(twoCuboidsQ(refSolver, refNIter, refDt));
+        const scalarField q(twoCuboidsQ(checkSolver, checkNIter, checkDt));
+        checkReference
+        (
+            "two cuboids on springs at an angle",
+            Foam::sqrt(sqr(q[0] - ref[0]) + sqr(q[1] - ref[1]))
+        );
+
+        for (const solverCase& sc : cases)
         {
             scalar e[3];
             for (label i = 0; i < 3; ++i)
             {
-                const scalarField q(twoCuboidsQ(solver, 1, dts[i]));
+                const scalarField q(twoCuboidsQ(sc.solver, 1, sc.dt[i]));
                 e[i] = Foam::sqrt(sqr(q[0] - ref[0]) + sqr(q[1] - ref[1]));
             }
-            checkOrder
-            (
-                std::string("two cuboids on springs at an angle, ") + solver,
-                e
-            );
+            checkOrder("two cuboids on springs at an angle", sc, e);
         }
     }
 
     // Torque-free asymmetric body against a converged run
-    const tensor ref(topOrientation("type Newmark;", 4, dts[2]/64));
-    for (const char* solver : solvers)
+    const tensor ref(topOrientation(refSolver, refNIter, refDt));
+    checkReference
+    (
+        "torque-free top",
+        mag(topOrientation(checkSolver, checkNIter, checkDt) - ref)
+    );
+    for (const solverCase& sc : cases)
     {
         scalar e[3];
         for (label i = 0; i < 3; ++i)
         {
-            e[i] = mag(topOrientation(solver, 1, dts[i]) - ref);
+            e[i] = mag(topOrientation(sc.solver, 1, sc.dt[i]) - ref);
         }
-        checkOrder(std::string("torque-free top, ") + solver, e);
+        checkOrder("torque-free top", sc, e);
     }
 
     return test::testResult();

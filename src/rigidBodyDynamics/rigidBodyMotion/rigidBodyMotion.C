@@ -1,5 +1,6 @@
 #include "rigidBodyMotion.H"
 #include "unitConversion.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -16,12 +17,59 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
 
     coupling_ = couplingScheme::New(dict, model_);
     solver_ = rigidBodySolver::New(model_, dict.subDict("solver"));
+    checkSolverCoupling(dict);
 
     ramp_.clear();
     if (dict.found("ramp"))
     {
         ramp_ = Function1<scalar>::New("ramp", dict);
     }
+}
+
+
+void Foam::RBD::rigidBodyMotion::checkSolverCoupling
+(
+    const dictionary& dict
+) const
+{
+    if (!solver_->multiStage() || !coupling_->learnsFromHistory())
+    {
+        return;
+    }
+
+    // The schemes that do not learn from their history, as each is with
+    // its default entries
+    const wordList schemes
+    (
+        couplingScheme::dictionaryConstructorTablePtr_->sortedToc()
+    );
+    std::string valid;
+    for (const word& scheme : schemes)
+    {
+        dictionary schemeDict;
+        schemeDict.add("accelerationRelaxationType", scheme);
+        if (!couplingScheme::New(schemeDict, model_)->learnsFromHistory())
+        {
+            valid += ' ' + scheme;
+        }
+    }
+
+    OStringStream given;
+    given.incrIndent();
+    coupling_->write(given);
+
+    FatalIOErrorInFunction(dict)
+        << "The solver " << solver_->type() << " evaluates the"
+        << " accelerations at several stages a step, each relaxed against"
+        << " that stage's previous evaluation, but the coupling scheme "
+        << coupling_->type() << " learns from the history of its calls,"
+        << " which would mix the stages'." << nl
+        << "The coupling entries read (given or defaulted):" << nl
+        << given.str().c_str()
+        << "Valid coupling schemes (accelerationRelaxationType) with the "
+        << solver_->type() << " solver, each with its default entries:"
+        << valid.c_str() << nl
+        << exit(FatalIOError);
 }
 
 
