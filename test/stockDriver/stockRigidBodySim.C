@@ -19,6 +19,14 @@ Description
     bodies, first for the initial state and then after every step (with
     -endOnly, after the last step only).
 
+    Ends, as rigidBodySim does, with a summary of the time loop:
+        stockRigidBodySim: N steps, M solves, W s of wall time, X us per step,
+            C s of CPU time
+    (the wall and CPU time, std::clock, of the loop, from its start to
+    after the last step's output, the way rigidBodySim's summary counts
+    them).  The status is
+    printed with controlDict's writePrecision digits, as rigidBodySim does.
+
     Prints first "stock library: <path>", the real path of the shared object
     that holds the stock model's code, found with dladdr(), so that a test
     can prove which library was loaded; stops if that is the project's own.
@@ -36,6 +44,10 @@ Usage
 #include "uniformDimensionedFields.H"
 #include "rigidBodyMotion.H"
 #include "rigidBodySimInput.H"
+
+#include "clockTime.H"
+
+#include <ctime>
 
 #include <dlfcn.h>
 #include <climits>
@@ -113,6 +125,9 @@ int main(int argc, char *argv[])
 
     #include "createTime.H"
 
+    // The status with writePrecision digits, as rigidBodySim prints it
+    Sout.precision(IOstream::defaultPrecision());
+
     const dictionary coeffs(rigidBodySimCoeffs(runTime));
 
     // The stock constructor reads g from coeffs but not constant/g: gravity
@@ -160,6 +175,11 @@ int main(int argc, char *argv[])
 
     report();
 
+    label nSteps = 0;
+    label nSolves = 0;
+    clockTime clock;
+    const std::clock_t cpu0 = std::clock();
+
     while (runTime.run())
     {
         ++runTime;
@@ -168,7 +188,9 @@ int main(int argc, char *argv[])
         for (label iter = 0; iter < nIter; ++iter)
         {
             motion.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+            ++nSolves;
         }
+        ++nSteps;
 
         const bool last =
             runTime.value()
@@ -178,6 +200,13 @@ int main(int argc, char *argv[])
             report();
         }
     }
+
+    const scalar wall = clock.elapsedTime();
+    Info<< "stockRigidBodySim: " << nSteps << " steps, " << nSolves
+        << " solves, " << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
+        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step, "
+        << scalar(std::clock() - cpu0)/CLOCKS_PER_SEC << " s of CPU time"
+        << nl;
 
     Info<< "End" << nl << endl;
 

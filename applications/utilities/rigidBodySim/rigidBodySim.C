@@ -28,7 +28,8 @@ Description
     printed; the start gets a row and, with report on, its status.  Nothing
     is printed or written per step otherwise: a line of progress at most
     every 5% of the run (time reached, steps per second, time left), and a
-    summary at the end (steps, solves, wall time, time per step).  With
+    summary at the end (steps, solves, wall time, time per step, the
+    process CPU time of the loop: std::clock, microseconds).  With
     -everyStep the status and a table row follow every step.  The time
     stepping, restart, status and tables are Foam::RBD::rigidBodyDriver's,
     as for the mesh motion solver.
@@ -44,6 +45,8 @@ Usage
 #include "rigidBodySimInput.H"
 #include "rigidBodySimControls.H"
 #include "clockTime.H"
+
+#include <ctime>
 
 using namespace Foam;
 
@@ -129,6 +132,7 @@ int main(int argc, char *argv[])
     label nSteps = 0;
     label nSolves = 0;
     clockTime clock;
+    const std::clock_t cpu0 = std::clock();
 
     while (runTime.run())
     {
@@ -170,8 +174,9 @@ int main(int argc, char *argv[])
     const scalar wall = clock.elapsedTime();
     Info<< "rigidBodySim: " << nSteps << " steps, " << nSolves << " solves, "
         << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
-        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step" << nl
-        << "End" << nl << endl;
+        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step, "
+        << scalar(std::clock() - cpu0)/CLOCKS_PER_SEC << " s of CPU time"
+        << nl << "End" << nl << endl;
 
     return 0;
 }
