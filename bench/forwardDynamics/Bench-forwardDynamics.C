@@ -9,7 +9,12 @@ Description
     - chainN: N revolute links (Rx and Ry in turn), N = 1, 10, 100, 1000;
     - floatingBase: a body on a floating joint with four legs of six
       revolute links each (30 degrees of freedom);
-    - floatingSpring: a cuboid on Py + Ry held by a linearSpring.
+    - floatingSpring: a cuboid on Py + Ry held by a linearSpring;
+    - floatingObjectPyRy, floatingObjectPyRyMerged, floatingObjectFloating:
+      the body of the stock floatingObject tutorial on its Py + Ry joints,
+      the same with a second body merged into it (mergeWith), and on a
+      floating joint (6 degrees of freedom), under a constant force and
+      moment as a fluid's (what a scene declares, what it costs).
     The same source is built against our library and, with -DSTOCK,
     against the stock one (run with /usr/lib's library by bench/run).
     Prints one line per model:
@@ -117,6 +122,27 @@ std::string floatingBase()
 }
 
 
+//- floatingObject's body (the stock tutorial's cuboid, rho 500) on a
+//  JOINT, optionally with a second part merged into it
+std::string floatingObject(const std::string& joint, const bool merged)
+{
+    return
+        "g (0 0 -9.81); solver { type Newmark; } bodies {"
+        " floatingObject { type cuboid; parent root; mass 7.5;"
+        " L (0.3 0.2 0.5); centreOfMass (0 0 0.25);"
+        " transform (1 0 0 0 1 0 0 0 1) (0.5 0.45 0.1);"
+        " joint { " + joint + " } }"
+      + (
+            merged
+          ? " ballast { type sphere; mergeWith floatingObject; mass 2;"
+            " radius 0.05; centreOfMass (0 0 0);"
+            " transform (1 0 0 0 1 0 0 0 1) (0 0 0.1); }"
+          : ""
+        )
+      + " }";
+}
+
+
 const char* floater =
     "g (0 0 -9.81); solver { type Newmark; }"
     "bodies { floater { type cuboid; parent root; mass 15;"
@@ -162,19 +188,36 @@ int main(int argc, char *argv[])
 
     const label divisor = args.found("quick") ? 5 : 1;
 
-    const std::pair<std::string, std::string> models[] =
+    const std::string PyRy
+    (
+        "type composite; joints ({ type Py; } { type Ry; });"
+    );
+
+    // Name, dictionary, and the body a fluid's force acts on (if any)
+    const std::string models[][3] =
     {
-        {"chain1", chain(1)},
-        {"chain10", chain(10)},
-        {"chain100", chain(100)},
-        {"chain1000", chain(1000)},
-        {"floatingBase", floatingBase()},
-        {"floatingSpring", floater}
+        {"chain1", chain(1), ""},
+        {"chain10", chain(10), ""},
+        {"chain100", chain(100), ""},
+        {"chain1000", chain(1000), ""},
+        {"floatingBase", floatingBase(), ""},
+        {"floatingSpring", floater, ""},
+        {"floatingObjectPyRy", floatingObject(PyRy, false), "floatingObject"},
+        {
+            "floatingObjectPyRyMerged",
+            floatingObject(PyRy, true),
+            "floatingObject"
+        },
+        {
+            "floatingObjectFloating",
+            floatingObject("type floating;", false),
+            "floatingObject"
+        }
     };
 
     for (const auto& model : models)
     {
-        IStringStream is(model.second);
+        IStringStream is(model[1]);
         const dictionary dict(is);
 
         #ifdef STOCK
@@ -191,7 +234,14 @@ int main(int argc, char *argv[])
         #endif
 
         const scalarField tau0(m.nDoF(), Zero);
-        const Field<spatialVector> fx0(m.nBodies(), Zero);
+
+        // A fluid's force: about the body's weight, up, with a moment
+        Field<spatialVector> fx0(m.nBodies(), Zero);
+        if (!model[2].empty())
+        {
+            fx0[m.bodyID(word(model[2]))] =
+                spatialVector(vector(0, 2, 0), vector(0.5, 1, 80));
+        }
         scalarField tau(tau0);
         Field<spatialVector> fx(fx0);
 
@@ -240,7 +290,7 @@ int main(int argc, char *argv[])
             }
         );
 
-        Info<< model.first.c_str() << ' ' << m.nDoF() << ' ' << fd << ' '
+        Info<< model[0].c_str() << ' ' << m.nDoF() << ' ' << fd << ' '
             << checksum << ' ' << step << endl;
     }
 
