@@ -54,7 +54,11 @@ namespace
     //  rigidBodyModel::XlambdaRotation): 14 multiplications about a
     //  coordinate axis, 6 without rotation, 24 for any
     template<direction k>
-    inline spatialVector motion(const spatialTransform& X, const spatialVector& m)
+    inline spatialVector motion
+    (
+        const spatialTransform& X,
+        const spatialVector& m
+    )
     {
         return spatialVector
         (
@@ -82,7 +86,11 @@ namespace
 
     //- X^T & f for a force f, given what X's rotation is
     template<direction k>
-    inline spatialVector force(const spatialTransform& X, const spatialVector& f)
+    inline spatialVector force
+    (
+        const spatialTransform& X,
+        const spatialVector& f
+    )
     {
         const vector ETfl(rotate<k, true>(X.E(), f.l()));
         return spatialVector
