@@ -56,7 +56,26 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Runs a rigid-body model from its dictionary, with no fluid"
+        "Runs a rigid-body model from its dictionary, with no fluid."
+    );
+    argList::addNote("");
+    argList::addNote
+    (
+        "Reads: the rigidBodyMotionCoeffs of constant/dynamicMeshDict, or"
+        " else constant/rigidBodyMotionDict; g from them or constant/g;"
+        " deltaT, endTime and the write controls from system/controlDict;"
+        " <time>/uniform/rigidBodyMotionState when started from a written"
+        " time."
+    );
+    argList::addNote("");
+    argList::addNote
+    (
+        "Writes, at write times: <time>/uniform/rigidBodyMotionState and"
+        " <time>/uniform/time (to restart from), a row of"
+        " postProcessing/rigidBodySim/<startTime>/<body>.dat for every body"
+        " named in bodies, and with 'report on' every body's status on the"
+        " log; a progress line at most every 5% of the run and a closing"
+        " summary (steps, solves, wall and CPU time)."
     );
     argList::noParallel();
     argList::addBoolOption
