@@ -470,8 +470,7 @@ void Foam::RBD::rigidBodyModel::inverseDynamics
         ws.a[i] = a;
 
         const spatialVector& v = ws.v[i];
-        ws.pA[i] =
-            (I_[i] & a) + (v ^ *(I_[i] & v));
+        ws.pA[i] = (I_[i] & a) + (v ^ *(I_[i] & v));
         if (!isZero(fx[i]))
         {
             updateX0(ws);
