@@ -585,33 +585,6 @@ void softWall()
     }
 }
 
-
-//- prescribedRotation drives a free rotation to the prescribed rate
-void prescribedRotation()
-{
-    autoPtr<RBD::rigidBodyMotion> motion = test::motion
-    (
-        header("Newmark")
-      + "bodies { rotor { type cuboid; parent root; mass 3;"
-        " L (0.4 0.1 0.2); centreOfMass (0 0 0); joint { type Ry; } } }"
-        " restraints { drive { type prescribedRotation; body rotor;"
-        " axis (0 1 0); omega table ((0 (0 0 0)) (1 (0 2 0))); } }"
-    );
-
-    test::runTo(motion(), 1e-3, 0.5);
-    checkAbs
-    (
-        motion->state().qDot()[0], 1, 5e-3,
-        "prescribedRotation: rate follows omega(t) = 2t (at 0.5 s)"
-    );
-    test::runTo(motion(), 1e-3, 0.5);
-    checkAbs
-    (
-        motion->state().qDot()[0], 2, 5e-3,
-        "prescribedRotation: rate follows omega(t) = 2t (at 1 s)"
-    );
-}
-
 } // End namespace physicsTest
 
 
@@ -630,7 +603,6 @@ int main(int argc, char *argv[])
     torsionSpring();
     addedMass();
     softWall();
-    prescribedRotation();
 
     return test::testResult();
 }

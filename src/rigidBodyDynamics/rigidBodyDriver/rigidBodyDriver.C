@@ -367,6 +367,21 @@ void Foam::RBD::rigidBodyDriver::status(const label bodyID)
         << "    Linear velocity: " << vCofR.l() << nl
         << "    Angular velocity: " << vCofR.w()
         << endl;
+
+    // The body's prescribed rotations: rate, prescription, motor moment
+    const labelList& prescribing = motion_.prescribing();
+    forAll(prescribing, s)
+    {
+        const RBD::restraint& r = motion_.restraints()[prescribing[s]];
+        if (r.bodyID() == bodyID)
+        {
+            const rateConstraint& c = motion_.prescriptions()[s];
+            Info<< "    Prescribed rotation " << r.name() << ": omega "
+                << (c.axis & vCofR.w()) << " rad/s about " << c.axis
+                << " (prescribed " << c.rate << "), motor moment "
+                << c.moment << " N m" << endl;
+        }
+    }
 }
 
 

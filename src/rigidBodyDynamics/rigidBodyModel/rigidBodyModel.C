@@ -414,25 +414,33 @@ Foam::label Foam::RBD::rigidBodyModel::bodyID
 }
 
 
+Foam::label Foam::RBD::rigidBodyModel::jointAncestor
+(
+    const label bodyID
+) const
+{
+    label i = lambda_[masterID(bodyID)];
+    while (i > 0 && isA<jointBody>(bodies_[i]))
+    {
+        i = lambda_[i];
+    }
+    return i;
+}
+
+
 Foam::labelList Foam::RBD::rigidBodyModel::bodyDoFs(const label bodyID) const
 {
     // From the body's own joint up through the jointBodies of its composite
     // joint, then reversed into the order of the state
     DynamicList<label> dofs;
 
-    label i = masterID(bodyID);
-    while (i > 0)
+    const label ancestor = jointAncestor(bodyID);
+    for (label i = masterID(bodyID); i != ancestor; i = lambda_[i])
     {
         const joint& J = joints_[i];
         for (label k = J.nDoF() - 1; k >= 0; --k)
         {
             dofs.append(J.qIndex() + k);
-        }
-
-        i = lambda_[i];
-        if (!isA<jointBody>(bodies_[i]))
-        {
-            break;
         }
     }
 

@@ -441,6 +441,33 @@ void Foam::RBD::rigidBodyModel::forwardDynamics
 }
 
 
+void Foam::RBD::rigidBodyModel::bodyAccelerations
+(
+    const scalarField& qDdot,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    ws.a[0] = spatialVector(Zero, -g_);
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        const joint::XSvc& J = ws.J[i];
+        const label qi = joints_[i].qIndex();
+
+        const spatialVector& ap = ws.a[lambda_[i]];
+        spatialVector a
+        (
+            transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap) + ws.c[i]
+        );
+        for (label k = 0; k < joints_[i].nDoF(); ++k)
+        {
+            a += J.S[k]*qDdot[qi + k];
+        }
+        ws.a[i] = a;
+    }
+}
+
+
 void Foam::RBD::rigidBodyModel::inverseDynamics
 (
     const rigidBodyModelState& state,
@@ -450,27 +477,15 @@ void Foam::RBD::rigidBodyModel::inverseDynamics
 ) const
 {
     kinematics(state, ws);
+    bodyAccelerations(state.qDdot(), ws);
 
-    const scalarField& qDdot = state.qDdot();
     const label nb = nBodies();
 
-    ws.a[0] = spatialVector(Zero, -g_);
-
-    // Accelerations and the forces each body needs, root to leaves
+    // The forces each body needs, then the joint forces, leaves to root
     for (label i = 1; i < nb; ++i)
     {
-        const joint::XSvc& J = ws.J[i];
-        const label qi = joints_[i].qIndex();
-
-        spatialVector a((ws.Xlambda[i] & ws.a[lambda_[i]]) + ws.c[i]);
-        for (label k = 0; k < joints_[i].nDoF(); ++k)
-        {
-            a += J.S[k]*qDdot[qi + k];
-        }
-        ws.a[i] = a;
-
         const spatialVector& v = ws.v[i];
-        ws.pA[i] = (I_[i] & a) + (v ^ *(I_[i] & v));
+        ws.pA[i] = (I_[i] & ws.a[i]) + (v ^ *(I_[i] & v));
         if (!isZero(fx[i]))
         {
             updateX0(ws);
@@ -478,7 +493,6 @@ void Foam::RBD::rigidBodyModel::inverseDynamics
         }
     }
 
-    // Joint forces, leaves to root
     for (label i = nb - 1; i > 0; --i)
     {
         const joint::XSvc& J = ws.J[i];
@@ -495,6 +509,321 @@ void Foam::RBD::rigidBodyModel::inverseDynamics
             ws.pA[p] += ws.Xlambda[i].T() & ws.pA[i];
         }
     }
+}
+
+
+Foam::scalar Foam::RBD::rigidBodyModel::rate
+(
+    const rateConstraint& c,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    updateX0(ws);
+    return (ws.X0[c.bodyID].E() & c.axis) & ws.v[c.bodyID].w();
+}
+
+
+void Foam::RBD::rigidBodyModel::constraintResiduals
+(
+    const UList<rateConstraint>& C,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    forAll(C, r)
+    {
+        const rateConstraint& c = C[r];
+        const vector e(ws.X0[c.bodyID].E() & c.axis);
+        const scalar omega = e & ws.v[c.bodyID].w();
+        ws.bR[r] =
+            c.acceleration + (c.rate - omega)/c.horizon
+          - (e & ws.a[c.bodyID].w());
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::unitMotorResponses
+(
+    const UList<rateConstraint>& C,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    const label nb = nBodies();
+
+    forAll(C, s)
+    {
+        // The motor's unit moment about the axis on its body, the reaction
+        // on the body the joint is relative to: as external forces, -X0* f
+        // in the bias forces
+        ws.pR = Zero;
+        const rateConstraint& cs = C[s];
+        ws.pR[cs.bodyID] =
+            spatialVector(-(ws.X0[cs.bodyID].E() & cs.axis), Zero);
+        if (cs.parentID)
+        {
+            ws.pR[cs.parentID] =
+                spatialVector(ws.X0[cs.parentID].E() & cs.axis, Zero);
+        }
+
+        // Articulated bias forces of the response, leaves to root: as in
+        // articulatedBodyDynamics with no velocities, no gravity and no
+        // joint forces, on its articulated inertias (U as it left them)
+        for (label i = nb - 1; i > 0; --i)
+        {
+            const joint& Ji = joints_[i];
+            const label n = Ji.nDoF();
+            const label rotation = XlambdaRotation(i);
+            const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
+            spatialVector pa(ws.pR[i]);
+            vector& u = ws.uR[i];
+            const label p = lambda_[i];
+
+            if (Ji.unitColumn() >= 0 && n == 1)
+            {
+                // U is Xlambda^T U: the parent's share is taken whole
+                u.x() = -pa[Ji.unitColumn()];
+                if (p)
+                {
+                    ws.pR[p] +=
+                        transformForce(ws.Xlambda[i], rotation, pa)
+                      + U[0]*(ws.Dinv[i].xx()*u.x());
+                }
+                continue;
+            }
+
+            for (label j = 0; j < n; ++j)
+            {
+                u[j] = -(ws.J[i].S[j] && pa);
+            }
+            const vector Dinvu(ws.Dinv[i] & u);
+            for (label j = 0; j < n; ++j)
+            {
+                pa += U[j]*Dinvu[j];
+            }
+            if (p)
+            {
+                ws.pR[p] += transformForce(ws.Xlambda[i], rotation, pa);
+            }
+        }
+
+        // Accelerations of the response, root to leaves
+        scalarField& qDdot = ws.qDdotR[s];
+        ws.aR[0] = Zero;
+        for (label i = 1; i < nb; ++i)
+        {
+            const joint& Ji = joints_[i];
+            const label n = Ji.nDoF();
+            const label k = Ji.unitColumn();
+            const label qi = Ji.qIndex();
+            const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
+            const spatialVector& ap = ws.aR[lambda_[i]];
+            spatialVector& a = ws.aR[i];
+
+            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap);
+
+            if (k >= 0 && n == 1)
+            {
+                qDdot[qi] = ws.Dinv[i].xx()*(ws.uR[i].x() - (U[0] && ap));
+                a[k] += qDdot[qi];
+                continue;
+            }
+
+            vector uUa(Zero);
+            for (label j = 0; j < n; ++j)
+            {
+                uUa[j] = ws.uR[i][j] - (U[j] && a);
+            }
+            const vector qDdoti(ws.Dinv[i] & uUa);
+            for (label j = 0; j < n; ++j)
+            {
+                qDdot[qi + j] = qDdoti[j];
+                a += ws.J[i].S[j]*qDdoti[j];
+            }
+        }
+
+        forAll(C, r)
+        {
+            const rateConstraint& cr = C[r];
+            ws.AR(r, s) =
+                (ws.X0[cr.bodyID].E() & cr.axis) & ws.aR[cr.bodyID].w();
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::solveConstraints
+(
+    const UList<rateConstraint>& C,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    const label n = C.size();
+    scalarSquareMatrix& L = ws.LR;
+    scalarField& b = ws.bR;
+    L = ws.AR;
+
+    scalar scale = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            scale = max(scale, mag(L(i, j)));
+        }
+    }
+
+    // Gaussian elimination with partial pivoting
+    for (label k = 0; k < n; ++k)
+    {
+        label pivot = k;
+        for (label i = k + 1; i < n; ++i)
+        {
+            if (mag(L(i, k)) > mag(L(pivot, k)))
+            {
+                pivot = i;
+            }
+        }
+
+        if (!(mag(L(pivot, k)) > 1e-12*scale))
+        {
+            FatalErrorInFunction
+                << "The prescribed rotation of body "
+                << bodies_[C[k].bodyID].name() << " about " << C[k].axis
+                << " cannot be met: its joint does not turn it about that"
+                << " axis relative to "
+                << bodies_[C[k].parentID].name()
+                << ", or another prescription already fixes that rotation"
+                << " (the response of the prescribed rates to the motors'"
+                << " moments is singular: " << ws.AR << ")"
+                << exit(FatalError);
+        }
+
+        if (pivot != k)
+        {
+            for (label j = 0; j < n; ++j)
+            {
+                std::swap(L(k, j), L(pivot, j));
+            }
+            std::swap(b[k], b[pivot]);
+        }
+
+        for (label i = k + 1; i < n; ++i)
+        {
+            const scalar f = L(i, k)/L(k, k);
+            for (label j = k; j < n; ++j)
+            {
+                L(i, j) -= f*L(k, j);
+            }
+            b[i] -= f*b[k];
+        }
+    }
+
+    for (label k = n - 1; k >= 0; --k)
+    {
+        for (label j = k + 1; j < n; ++j)
+        {
+            b[k] -= L(k, j)*b[j];
+        }
+        b[k] /= L(k, k);
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::addResponses
+(
+    const rigidBodyModelWorkspace& ws,
+    scalarField& x
+) const
+{
+    forAll(ws.bR, s)
+    {
+        const scalarField& r = ws.qDdotR[s];
+        forAll(x, j)
+        {
+            x[j] += ws.bR[s]*r[j];
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::constrainedDynamics
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    UList<rateConstraint>& C,
+    rigidBodyModelWorkspace& ws,
+    scalarField& qDdot
+) const
+{
+    articulatedBodyDynamics(tau, fx, ws, qDdot);
+
+    if (C.empty())
+    {
+        return;
+    }
+
+    // The motors' moments: what each constraint asks less what the body's
+    // acceleration is without them, through the responses to unit moments
+    updateX0(ws);
+    constraintResiduals(C, ws);
+    unitMotorResponses(C, ws);
+    solveConstraints(C, ws);
+
+    addResponses(ws, qDdot);
+    forAll(C, s)
+    {
+        C[s].moment = ws.bR[s];
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::motorResponses
+(
+    const rigidBodyModelState& state,
+    rigidBodyModelWorkspace& ws,
+    const UList<rateConstraint>& C
+) const
+{
+    // The articulated inertias of the positions, with no forces
+    kinematics(state, ws);
+    articulatedBodyDynamics(ws.tauZero, ws.fxZero, ws, ws.qDdotScratch);
+    updateX0(ws);
+    unitMotorResponses(C, ws);
+}
+
+
+void Foam::RBD::rigidBodyModel::constrainState
+(
+    rigidBodyModelState& state,
+    rigidBodyModelWorkspace& ws,
+    const UList<rateConstraint>& C
+) const
+{
+    if (C.empty())
+    {
+        return;
+    }
+
+    // The responses to the motors' unit moments (they depend on the
+    // positions only)
+    motorResponses(state, ws, C);
+
+    // The motors' impulses that bring the rates to the constraints'
+    forAll(C, r)
+    {
+        ws.bR[r] = C[r].rate - rate(C[r], ws);
+    }
+    solveConstraints(C, ws);
+
+    addResponses(ws, state.qDot());
+
+    // At the new velocities, the change of the motors' moments that gives
+    // the accelerations the constraints ask
+    kinematics(state, ws);
+    bodyAccelerations(state.qDdot(), ws);
+    updateX0(ws);
+    constraintResiduals(C, ws);
+    solveConstraints(C, ws);
+
+    addResponses(ws, state.qDdot());
 }
 
 

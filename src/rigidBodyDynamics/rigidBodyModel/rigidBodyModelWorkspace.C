@@ -28,4 +28,32 @@ void Foam::RBD::rigidBodyModelWorkspace::resize(const rigidBodyModel& model)
     U.setSize(n);
     Dinv.setSize(n, Zero);
     u.setSize(n, Zero);
+    setConstraints(model, nConstraints());
+}
+
+
+void Foam::RBD::rigidBodyModelWorkspace::setConstraints
+(
+    const rigidBodyModel& model,
+    const label nConstraints
+)
+{
+    // Nothing for a model with none
+    const label n = nConstraints ? model.nBodies() : 0;
+    const label nDoF = nConstraints ? model.nDoF() : 0;
+
+    pR.setSize(n, Zero);
+    uR.setSize(n, Zero);
+    aR.setSize(n, Zero);
+    qDdotR.setSize(nConstraints);
+    for (scalarField& r : qDdotR)
+    {
+        r.setSize(nDoF, Zero);
+    }
+    AR.setSize(nConstraints);
+    LR.setSize(nConstraints);
+    bR.setSize(nConstraints, Zero);
+    tauZero.setSize(nDoF, Zero);
+    fxZero.setSize(n, Zero);
+    qDdotScratch.setSize(nDoF, Zero);
 }

@@ -94,13 +94,121 @@ void Foam::RBD::rigidBodyMotion::readRestraints(const dictionary& dict)
 
         restraints_.append(restraint::New(e.keyword(), e.dict(), model_));
     }
+
+    DynamicList<label> prescribing;
+    forAll(restraints_, ri)
+    {
+        if (restraints_[ri].prescribes())
+        {
+            prescribing.append(ri);
+        }
+    }
+    prescribing_ = prescribing;
+    prescriptions_.setSize(prescribing_.size());
+    ws_.setConstraints(model_, prescribing_.size());
 }
 
 
-void Foam::RBD::rigidBodyMotion::evaluate(rigidBodyModelState& state)
+void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
+{
+    if (prescribing_.empty())
+    {
+        return;
+    }
+
+    // Each motor's response: the body's angular acceleration about the
+    // axis per unit moment, against that of the body on its own
+    prescribe(state_);
+    model_.motorResponses(state_, ws_, prescriptions_);
+    wsValid_ = true;
+
+    forAll(prescriptions_, s)
+    {
+        const rateConstraint& c = prescriptions_[s];
+        const rigidBodyInertia& body = model_.bodies()[c.bodyID];
+        const vector e(model_.X0(c.bodyID, ws_).E() & c.axis);
+        const scalar Ia = e & (body.Ic() & e);
+
+        if (!(ws_.AR(s, s) > 1e-9/max(Ia, VSMALL)))
+        {
+            const restraint& r = restraints_[prescribing_[s]];
+            const joint& J = model_.joints()[c.bodyID];
+            const dictionary& rDict =
+                dict.subDict("restraints").subDict(r.name());
+            FatalIOErrorInFunction(rDict)
+                << "Restraint " << r.name() << " (" << r.type()
+                << ") prescribes the rotation of body "
+                << model_.name(r.bodyID()) << " about " << c.axis
+                << ", but its joint (" << J.type() << ") does not turn it"
+                << " about that axis relative to "
+                << model_.bodies()[c.parentID].name() << "." << nl
+                << "Give the body a joint that does (for an axis along a"
+                << " coordinate axis, e.g. Rx, Ry or Rz; for any axis, Ra"
+                << " with that axis, or Rs), or prescribe another axis."
+                << nl << exit(FatalIOError);
+        }
+
+        // One rotation prescribed twice
+        for (label r = 0; r < s; ++r)
+        {
+            const rateConstraint& cr = prescriptions_[r];
+            if (cr.bodyID == c.bodyID && mag(cr.axis ^ c.axis) < 1e-9)
+            {
+                const restraint& rr = restraints_[prescribing_[r]];
+                const restraint& rs = restraints_[prescribing_[s]];
+                FatalIOErrorInFunction(dict.subDict("restraints"))
+                    << "Restraints " << rr.name() << " and " << rs.name()
+                    << " both prescribe the rotation of body "
+                    << model_.name(rs.bodyID()) << " about " << c.axis
+                    << ": give it one prescription." << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::prescribe(const rigidBodyModelState& state)
+{
+    forAll(prescribing_, s)
+    {
+        restraints_[prescribing_[s]].prescribe
+        (
+            state,
+            deltaT_,
+            prescriptions_[s]
+        );
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::dynamics
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    scalarField& qDdot
+)
+{
+    if (prescribing_.empty())
+    {
+        model_.articulatedBodyDynamics(tau, fx, ws_, qDdot);
+    }
+    else
+    {
+        model_.constrainedDynamics(tau, fx, prescriptions_, ws_, qDdot);
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::evaluate
+(
+    rigidBodyModelState& state,
+    scalarField& qDdot
+)
 {
     model_.kinematics(state, ws_);
     wsValid_ = (&state == &state_);
+    prescribe(state);
 
     forAll(tauTotal_, i)
     {
@@ -130,7 +238,7 @@ void Foam::RBD::rigidBodyMotion::evaluate(rigidBodyModelState& state)
         }
     }
 
-    model_.articulatedBodyDynamics(tauTotal_, fxTotal_, ws_, state.qDdot());
+    dynamics(tauTotal_, fxTotal_, qDdot);
 }
 
 
@@ -233,13 +341,7 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
         {
             fxTotal_[i] -= fxGiven_[i];
         }
-        model_.articulatedBodyDynamics
-        (
-            tauTotal_,
-            fxTotal_,
-            ws_,
-            qDdotExternal_
-        );
+        dynamics(tauTotal_, fxTotal_, qDdotExternal_);
         forAll(qDdotExternal_, i)
         {
             qDdotExternal_[i] = state0_.qDdot()[i] - qDdotExternal_[i];
@@ -308,6 +410,8 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
 )
 :
     model_(dict),
+    momentsValid_(false),
+    deltaT_(0),
     state_(model_.nDoF(), dict),
     state0_(state_),
     ws_(model_),
@@ -338,6 +442,9 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
         model_.checkState(state_.q(), stateDict);
         state0_ = state_;
     }
+
+    deltaT_ = state_.deltaT();
+    checkPrescriptions(dict);
 }
 
 
@@ -382,6 +489,9 @@ void Foam::RBD::rigidBodyMotion::solve
         externalForces_ = externalForces_ || (mag(fx[i]) > 0);
     }
 
+    deltaT_ = deltaT;
+    momentsValid_ = false;
+
     initialAcceleration();
 
     state_.t() = t;
@@ -391,6 +501,14 @@ void Foam::RBD::rigidBodyMotion::solve
     {
         solver_->solve(state0_, state_, *this, nSolves_ == 0);
         ++nSolves_;
+
+        // The prescribed rates met at the end of the solve, whatever the
+        // relaxation and the scheme left
+        if (prescribing_.size())
+        {
+            prescribe(state_);
+            model_.constrainState(state_, ws_, prescriptions_);
+        }
     }
 
     // The solver's last evaluation was at an intermediate state
@@ -400,12 +518,32 @@ void Foam::RBD::rigidBodyMotion::solve
 }
 
 
+const Foam::List<Foam::RBD::rateConstraint>&
+Foam::RBD::rigidBodyMotion::prescriptions()
+{
+    if (!momentsValid_ && prescribing_.size())
+    {
+        evaluate(state_, ws_.qDdotScratch);
+        momentsValid_ = true;
+    }
+    return prescriptions_;
+}
+
+
 void Foam::RBD::rigidBodyMotion::restraintForces
 (
     scalarField& tau,
     Field<spatialVector>& fx
 )
 {
+    // The motors' moments on their bodies and the reactions
+    for (const rateConstraint& c : prescriptions())
+    {
+        const vector M(c.moment*c.axis);
+        fx[c.bodyID] += spatialVector(M, Zero);
+        fx[c.parentID] -= spatialVector(M, Zero);
+    }
+
     const rigidBodyModelWorkspace& ws = workspace();
 
     forAll(restraints_, ri)

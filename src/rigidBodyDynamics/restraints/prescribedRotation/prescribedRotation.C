@@ -43,25 +43,45 @@ Foam::RBD::restraints::prescribedRotation::prescribedRotation
 void Foam::RBD::restraints::prescribedRotation::restrain
 (
     scalarField&,
-    Field<spatialVector>& fx,
-    const rigidBodyModelState& state,
-    const rigidBodyModelWorkspace& ws
+    Field<spatialVector>&,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace&
 ) const
 {
-    if (!(state.deltaT() > 0))
+    // No force of its own: the model's forward dynamics applies the moment
+    // the prescription takes (prescribe())
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::prescribe
+(
+    const rigidBodyModelState& state,
+    const scalar deltaT,
+    rateConstraint& c
+) const
+{
+    const scalar t = state.t();
+
+    c.bodyID = masterID_;
+    c.parentID = model_.jointAncestor(masterID_);
+    c.axis = axis_;
+    c.rate = axis_ & omega_->value(t);
+
+    if (deltaT > 0)
     {
-        return;
+        // The rate of one step ahead, reached by the end of the step
+        c.acceleration =
+            ((axis_ & omega_->value(t + deltaT)) - c.rate)/deltaT;
+        c.horizon = deltaT;
     }
-
-    // Moment of inertia about the axis through the centre of mass
-    const tensor E(model_.X0(masterID_, ws).E());
-    const vector aBody(E & axis_);
-    const scalar Ia = aBody & (model_.bodies()[masterID_].Ic() & aBody);
-
-    const scalar w = axis_ & model_.v(bodyID_, Zero, ws).w();
-    const scalar wSet = axis_ & omega_->value(state.t());
-
-    addMoment(fx, Ia*(wSet - w)/state.deltaT()*axis_);
+    else
+    {
+        // No step to correct within: the prescription's own rate of change
+        const scalar h = 1e-6*max(mag(t), 1);
+        c.acceleration =
+            (axis_ & (omega_->value(t + h) - omega_->value(t - h)))/(2*h);
+        c.horizon = VGREAT;
+    }
 }
 
 

@@ -60,6 +60,19 @@ Foam::autoPtr<Foam::RBD::restraint> Foam::RBD::restraint::New
 }
 
 
+void Foam::RBD::restraint::prescribe
+(
+    const rigidBodyModelState&,
+    const scalar,
+    rateConstraint&
+) const
+{
+    FatalErrorInFunction
+        << "Restraint " << name_ << " of type " << type()
+        << " prescribes no motion" << abort(FatalError);
+}
+
+
 bool Foam::RBD::restraint::read(const dictionary& dict)
 {
     coeffs_ = dict;
