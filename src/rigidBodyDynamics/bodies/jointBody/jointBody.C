@@ -1,10 +1,12 @@
 #include "jointBody.H"
+#include "addToRunTimeSelectionTable.H"
 
 namespace Foam
 {
 namespace RBD
 {
     defineTypeNameAndDebug(jointBody, 0);
+    addToRunTimeSelectionTable(rigidBody, jointBody, dictionary);
 }
 }
 
@@ -12,6 +14,12 @@ namespace RBD
 Foam::RBD::jointBody::jointBody(const word& name)
 :
     masslessBody(name)
+{}
+
+
+Foam::RBD::jointBody::jointBody(const word& name, const dictionary& dict)
+:
+    masslessBody(name, dict)
 {}
 
 
