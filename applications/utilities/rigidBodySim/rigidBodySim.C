@@ -35,7 +35,12 @@ Description
     as for the mesh motion solver.
 
 Usage
-    rigidBodySim [-case DIR] [-everyStep]
+    rigidBodySim [-case DIR] [-everyStep] [-report]
+
+    -report adds the model report (rigidBodySimReport.H): the model tree,
+    masses and inertias, the restraints' natural periods against deltaT
+    before the first step, each degree of freedom's range of motion after
+    the last; also written to postProcessing/rigidBodySim/<startTime>/report.
 
 \*---------------------------------------------------------------------------*/
 
@@ -44,6 +49,7 @@ Usage
 #include "rigidBodyDriver.H"
 #include "rigidBodySimInput.H"
 #include "rigidBodySimControls.H"
+#include "rigidBodySimReport.H"
 #include "clockTime.H"
 
 #include <ctime>
@@ -80,6 +86,15 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addBoolOption
     (
+        "report",
+        "also report the model: before the first step its bodies (parent,"
+        " joint, degrees of freedom, mass, centre of mass, inertia), total"
+        " mass and restraints' natural periods against deltaT; after the"
+        " last, each degree of freedom's range of motion (and which stayed"
+        " unused); written to postProcessing/rigidBodySim/<startTime>/report"
+    );
+    argList::addBoolOption
+    (
         "everyStep",
         "print the status of every body and write a table row after every"
         " time step, not only at write times"
@@ -112,13 +127,9 @@ int main(int argc, char *argv[])
 
     const bool everyStep = args.found("everyStep");
 
-    RBD::rigidBodyDriver driver
-    (
-        runTime,
-        rigidBodySimCoeffs(runTime),
-        "rigidBodySim",
-        false
-    );
+    const dictionary coeffs(rigidBodySimCoeffs(runTime));
+    RBD::rigidBodyDriver driver(runTime, coeffs, "rigidBodySim", false);
+    const word startTimeName(runTime.timeName());
     driver.tableEveryStep(everyStep);
 
     const RBD::rigidBodyModel& model = driver.model();
@@ -126,6 +137,17 @@ int main(int argc, char *argv[])
     Info<< "Model: " << model.bodyNames().size() - 1 << " bodies, "
         << model.nDoF() << " degrees of freedom, g " << model.g() << nl
         << endl;
+
+    autoPtr<rigidBodySimReport> modelReport;
+    if (args.found("report"))
+    {
+        modelReport.reset(new rigidBodySimReport(driver));
+        modelReport->printModel
+        (
+            runTime.deltaTValue(),
+            coeffs.subDict("solver").get<word>("type")
+        );
+    }
 
     // No fluid: the restraints are the only forces besides gravity
     const Field<spatialVector> noExternalForces(model.nBodies(), Zero);
@@ -159,6 +181,10 @@ int main(int argc, char *argv[])
 
         driver.solve(noExternalForces);
         ++nSteps;
+        if (modelReport.valid())
+        {
+            modelReport->track();
+        }
         nSolves += driver.motion().nSolves();
 
         if (everyStep || (driver.report() && runTime.writeTime()))
@@ -191,6 +217,16 @@ int main(int argc, char *argv[])
     }
 
     const scalar wall = clock.elapsedTime();
+
+    if (modelReport.valid())
+    {
+        modelReport->printRanges
+        (
+            runTime.globalPath()/"postProcessing"/"rigidBodySim"
+           /startTimeName
+        );
+    }
+
     Info<< "rigidBodySim: " << nSteps << " steps, " << nSolves << " solves, "
         << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
         << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step, "

@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -48,6 +49,14 @@ void Foam::RBD::restraints::linearAxialAngularSpring::restrain
     const scalar omega = axis_ & model_.v(bodyID_, Zero, ws).w();
 
     addMoment(fx, -(stiffness_*theta + damping_*omega)*axis_);
+}
+
+
+Foam::scalar Foam::RBD::restraints::linearAxialAngularSpring::naturalPeriod() const
+{
+    using constant::mathematical::twoPi;
+    const scalar I = axis_ & (model_.bodies()[masterID_].Ic() & axis_);
+    return stiffness_ > 0 ? twoPi*sqrt(I/stiffness_) : 0;
 }
 
 

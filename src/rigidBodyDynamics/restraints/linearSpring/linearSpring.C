@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -50,6 +51,14 @@ void Foam::RBD::restraints::linearSpring::restrain
     const scalar LDot = dir & model_.v(bodyID_, refAttachmentPt_, ws).l();
 
     addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
+}
+
+
+Foam::scalar Foam::RBD::restraints::linearSpring::naturalPeriod() const
+{
+    using constant::mathematical::twoPi;
+    const scalar m = model_.bodies()[masterID_].m();
+    return stiffness_ > 0 ? twoPi*sqrt(m/stiffness_) : 0;
 }
 
 

@@ -58,6 +58,12 @@ void Foam::RBD::restraints::softWall::restrain
 }
 
 
+Foam::scalar Foam::RBD::restraints::softWall::naturalPeriod() const
+{
+    return 2*C_;
+}
+
+
 bool Foam::RBD::restraints::softWall::read(const dictionary& dict)
 {
     restraint::read(dict);
