@@ -383,9 +383,23 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
 
     // Accelerations, root to leaves; gravity as an upward acceleration of
     // the root
-    ws.a[0] = spatialVector(Zero, -g_);
+    accelerationPass(ws.u, &ws.c, spatialVector(Zero, -g_), ws, ws.a, qDdot);
+}
 
-    for (label i = 1; i < nb; ++i)
+
+void Foam::RBD::rigidBodyModel::accelerationPass
+(
+    const List<vector>& u,
+    const List<spatialVector>* c,
+    const spatialVector& a0,
+    const rigidBodyModelWorkspace& ws,
+    List<spatialVector>& A,
+    scalarField& qDdot
+) const
+{
+    A[0] = a0;
+
+    for (label i = 1; i < nBodies(); ++i)
     {
         const joint& Ji = joints_[i];
         const label n = Ji.nDoF();
@@ -393,28 +407,29 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
         const label qi = Ji.qIndex();
         const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
 
-        const spatialVector& ap = ws.a[lambda_[i]];
-        spatialVector& a = ws.a[i];
+        const spatialVector& ap = A[lambda_[i]];
+        spatialVector& a = A[i];
+
+        a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap);
+        if (c)
+        {
+            a += (*c)[i];
+        }
 
         if (k >= 0 && n == 1)
         {
             // U and u as the backward pass left them: Xlambda^T U, u - U c
-            const scalar qDdoti =
-                ws.Dinv[i].xx()*(ws.u[i].x() - (U[0] && ap));
+            const scalar qDdoti = ws.Dinv[i].xx()*(u[i].x() - (U[0] && ap));
             qDdot[qi] = qDdoti;
-            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap)
-              + ws.c[i];
             a[k] += qDdoti;
         }
         else
         {
-            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap)
-              + ws.c[i];
             const joint::XSvc& J = ws.J[i];
             vector uUa(Zero);
             for (label j = 0; j < n; ++j)
             {
-                uUa[j] = ws.u[i][j] - (U[j] && a);
+                uUa[j] = u[i][j] - (U[j] && a);
             }
             const vector qDdoti(ws.Dinv[i] & uUa);
 
@@ -606,39 +621,7 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
         }
 
         // Accelerations of the response, root to leaves
-        scalarField& qDdot = ws.qDdotR[s];
-        ws.aR[0] = Zero;
-        for (label i = 1; i < nb; ++i)
-        {
-            const joint& Ji = joints_[i];
-            const label n = Ji.nDoF();
-            const label k = Ji.unitColumn();
-            const label qi = Ji.qIndex();
-            const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
-            const spatialVector& ap = ws.aR[lambda_[i]];
-            spatialVector& a = ws.aR[i];
-
-            a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap);
-
-            if (k >= 0 && n == 1)
-            {
-                qDdot[qi] = ws.Dinv[i].xx()*(ws.uR[i].x() - (U[0] && ap));
-                a[k] += qDdot[qi];
-                continue;
-            }
-
-            vector uUa(Zero);
-            for (label j = 0; j < n; ++j)
-            {
-                uUa[j] = ws.uR[i][j] - (U[j] && a);
-            }
-            const vector qDdoti(ws.Dinv[i] & uUa);
-            for (label j = 0; j < n; ++j)
-            {
-                qDdot[qi + j] = qDdoti[j];
-                a += ws.J[i].S[j]*qDdoti[j];
-            }
-        }
+        accelerationPass(ws.uR, nullptr, Zero, ws, ws.aR, ws.qDdotR[s]);
 
         forAll(C, r)
         {
