@@ -182,24 +182,6 @@ void Foam::RBD::rigidBodyMotion::prescribe(const rigidBodyModelState& state)
 }
 
 
-void Foam::RBD::rigidBodyMotion::dynamics
-(
-    const scalarField& tau,
-    const Field<spatialVector>& fx,
-    scalarField& qDdot
-)
-{
-    if (prescribing_.empty())
-    {
-        model_.articulatedBodyDynamics(tau, fx, ws_, qDdot);
-    }
-    else
-    {
-        model_.constrainedDynamics(tau, fx, prescriptions_, ws_, qDdot);
-    }
-}
-
-
 void Foam::RBD::rigidBodyMotion::evaluate
 (
     rigidBodyModelState& state,
@@ -238,7 +220,7 @@ void Foam::RBD::rigidBodyMotion::evaluate
         }
     }
 
-    dynamics(tauTotal_, fxTotal_, qDdot);
+    model_.constrainedDynamics(tauTotal_, fxTotal_, prescriptions_, ws_, qDdot);
 }
 
 
@@ -341,7 +323,14 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
         {
             fxTotal_[i] -= fxGiven_[i];
         }
-        dynamics(tauTotal_, fxTotal_, qDdotExternal_);
+        model_.constrainedDynamics
+        (
+            tauTotal_,
+            fxTotal_,
+            prescriptions_,
+            ws_,
+            qDdotExternal_
+        );
         forAll(qDdotExternal_, i)
         {
             qDdotExternal_[i] = state0_.qDdot()[i] - qDdotExternal_[i];

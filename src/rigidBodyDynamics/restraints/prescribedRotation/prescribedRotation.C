@@ -23,7 +23,8 @@ Foam::RBD::restraints::prescribedRotation::prescribedRotation
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model)
+    restraint(name, dict, model),
+    ancestorID_(model.jointAncestor(masterID_))
 {
     read(dict);
 }
@@ -36,7 +37,8 @@ Foam::RBD::restraints::prescribedRotation::prescribedRotation
 :
     restraint(pr),
     axis_(pr.axis_),
-    omega_(pr.omega_->clone().ptr())
+    omega_(pr.omega_->clone().ptr()),
+    ancestorID_(pr.ancestorID_)
 {}
 
 
@@ -63,7 +65,7 @@ void Foam::RBD::restraints::prescribedRotation::prescribe
     const scalar t = state.t();
 
     c.bodyID = masterID_;
-    c.parentID = model_.jointAncestor(masterID_);
+    c.parentID = ancestorID_;
     c.axis = axis_;
     c.rate = axis_ & omega_->value(t);
 
