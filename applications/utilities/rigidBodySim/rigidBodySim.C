@@ -15,6 +15,11 @@ Description
     Gravity is their g entry, or else constant/g.  system/controlDict gives
     deltaT, endTime and the write controls.
 
+    It runs with the floating-point traps off (FOAM_SIGFPE has no effect):
+    every step's state is checked instead, and a run that overflows stops
+    with a FatalError naming the body, the quantity and the time, its last
+    good state written (Foam::RBD::rigidBodyDriver), never with a signal.
+
     Its output follows system/controlDict, as an OpenFOAM application's
     does: at each write time (writeControl, writeInterval) the model state
     is written to <time>/uniform/rigidBodyMotionState (a run started from a
@@ -101,6 +106,13 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    // No input ends in a signal: with the floating-point traps off, a
+    // number OpenFOAM's reader cannot hold (1e400) is its FatalIOError at
+    // the entry, an overflow in a check an infinity the check refuses, and
+    // a step that overflows a FatalError of the driver's checks, which
+    // name the body, the quantity and the time
+    RBD::floatingPointTraps traps;
 
     checkRunControls(args);
 

@@ -14,6 +14,77 @@ namespace RBD
 }
 
 
+// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Whether every component is finite (not magSqr: a finite 1e200 squared
+//  is not)
+template<class Type>
+bool allFinite(const Type& v)
+{
+    for (Foam::direction c = 0; c < Foam::pTraits<Type>::nComponents; ++c)
+    {
+        if (!std::isfinite(Foam::component(v, c)))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+template<class Type>
+bool allFinite(const Foam::Field<Type>& f)
+{
+    for (const Type& v : f)
+    {
+        if (!allFinite(v))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+//- Append to os every entry of dict (at any depth, its keywords joined by
+//  '/') that holds a number beyond 1e100 or, not zero, below 1e-100 in
+//  magnitude: the likely cause of an overflow
+void extremeEntries
+(
+    const Foam::dictionary& dict,
+    const Foam::string& path,
+    Foam::OStringStream& os
+)
+{
+    for (const Foam::entry& e : dict)
+    {
+        const Foam::string key
+        (
+            path.empty() ? Foam::string(e.keyword()) : path + "/" + e.keyword()
+        );
+        if (e.isDict())
+        {
+            extremeEntries(e.dict(), key, os);
+            continue;
+        }
+        for (const Foam::token& t : e.stream())
+        {
+            const Foam::scalar x =
+                t.isNumber() ? Foam::mag(t.number()) : Foam::scalar(0);
+            if (x > 1e100 || (x > 0 && x < 1e-100))
+            {
+                os  << "    entry " << key.c_str() << ": " << t.number()
+                    << Foam::nl;
+                break;
+            }
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
@@ -116,6 +187,40 @@ Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
 }
 
 
+Foam::word Foam::RBD::rigidBodyDriver::columnName
+(
+    const label bi,
+    const label k
+) const
+{
+    // The header's columns, one word each, in the order of fillRows
+    wordList names;
+    names.append("t");
+    for (const word c : {"x", "y", "z"}) names.append("CofR." + c);
+    for (const word c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
+    {
+        names.append("Orientation." + c);
+    }
+    for (const word c : {"x", "y", "z"}) names.append("v." + c);
+    for (const word c : {"x", "y", "z"}) names.append("omega." + c);
+    for (const label i : dofs_[bi]) names.append("q" + Foam::name(i));
+    for (const label i : dofs_[bi]) names.append("qDot" + Foam::name(i));
+    wordList forces{"restraintForce", "restraintMoment"};
+    if (externalForces_)
+    {
+        forces = {"fluidForce", "fluidMoment", forces[0], forces[1]};
+    }
+    for (const word& f : forces)
+    {
+        for (const word c : {"x", "y", "z"}) names.append(f + "." + c);
+    }
+    names.append("kineticEnergy");
+    names.append("potentialEnergy");
+
+    return k < names.size() ? names[k] : word("column" + Foam::name(k + 1));
+}
+
+
 void Foam::RBD::rigidBodyDriver::fillRows()
 {
     const rigidBodyModel& model = motion_.model();
@@ -164,7 +269,25 @@ void Foam::RBD::rigidBodyDriver::writeRows()
         return;
     }
 
+    floatingPointTraps traps;
     fillRows();
+
+    forAll(rows_, bi)
+    {
+        forAll(rows_[bi], k)
+        {
+            if (!allFinite(rows_[bi][k]))
+            {
+                stepFailed
+                (
+                    "The " + columnName(bi, k) + " of body " + names_[bi]
+                  + " at t = " + Foam::name(rows_[bi][0]) + " (column "
+                  + Foam::name(k + 1) + " of its table) is "
+                  + Foam::name(rows_[bi][k])
+                );
+            }
+        }
+    }
 
     if (tables_.empty())
     {
@@ -240,6 +363,191 @@ void Foam::RBD::rigidBodyDriver::reportCoupling() const
 }
 
 
+Foam::string Foam::RBD::rigidBodyDriver::dofName(const label i) const
+{
+    // The body (not a jointBody of its composite joint) that the degree of
+    // freedom moves relative to its parent
+    const rigidBodyModel& m = model();
+    for (const word& name : m.bodyNames())
+    {
+        const label bodyID = m.bodyID(name);
+        if (m.isMerged(bodyID) || !m.bodyDoFs(bodyID).found(i))
+        {
+            continue;
+        }
+        const joint& J = m.joints()[bodyID];
+        const bool composite = m.bodyDoFs(bodyID).size() > J.nDoF();
+        return
+            "degree of freedom " + Foam::name(i) + ", of the joint of body "
+          + name + " (" + (composite ? word("composite") : J.type()) + ")";
+    }
+    return "degree of freedom " + Foam::name(i);
+}
+
+
+void Foam::RBD::rigidBodyDriver::checkExternalForces
+(
+    const Field<spatialVector>& fx
+)
+{
+    forAll(fx, bodyID)
+    {
+        if (!allFinite(fx[bodyID]))
+        {
+            stepFailed
+            (
+                "The external (fluid) force on body " + model().name(bodyID)
+              + " for the step to t = " + Foam::name(time_.value())
+              + " is not finite: moment " + Foam::name(fx[bodyID].w())
+              + ", force " + Foam::name(fx[bodyID].l()) + " (global axes,"
+              + " about the global origin).\nThe flow has failed before"
+              + " the bodies moved: look at the flow solution of this step"
+              + " (Courant number, pressure solver)"
+            );
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyDriver::checkState()
+{
+    const rigidBodyModelState& state = motion_.state();
+    const scalarField* fields[3] = {&state.q(), &state.qDot(), &state.qDdot()};
+    const char* names[3] = {"q", "qDot", "qDdot"};
+
+    for (label f = 0; f < 3; ++f)
+    {
+        const scalarField& values = *fields[f];
+        forAll(values, i)
+        {
+            if (!allFinite(values[i]))
+            {
+                stepFailed
+                (
+                    "The step from t = " + Foam::name(motion_.state0().t())
+                  + " to " + Foam::name(time_.value()) + " gave "
+                  + names[f] + " = " + Foam::name(values[i]) + " at "
+                  + dofName(i)
+                );
+            }
+        }
+    }
+}
+
+
+void Foam::RBD::rigidBodyDriver::stepFailed(const string& what)
+{
+    floatingPointTraps traps;
+
+    // Back to the start of the step, the last state that was finite
+    motion_.state() = motion_.state0();
+    const rigidBodyModelState& state = motion_.state();
+    const scalar deltaT = time_.deltaTValue();
+
+    OStringStream causes;
+
+    // Restraints whose force is not finite at the start of the step, and
+    // the three largest of the others
+    const PtrList<restraint>& restraints = motion_.restraints();
+    const rigidBodyModelWorkspace& ws = motion_.workspace();
+    scalarField tau(model().nDoF());
+    Field<spatialVector> fx(model().nBodies());
+    List<spatialVector> fr(restraints.size(), Zero);
+    scalarList size(restraints.size(), Zero);
+    forAll(restraints, ri)
+    {
+        const restraint& r = restraints[ri];
+        tau = Zero;
+        fx = Zero;
+        r.restrain(tau, fx, state, ws);
+        fr[ri] = fx[model().masterID(r.bodyID())];
+        if (!allFinite(tau) || !allFinite(fx))
+        {
+            causes
+                << "    restraint " << r.name() << " (" << r.type()
+                << " on body " << model().name(r.bodyID()) << "): its force"
+                << " is not finite at t = " << state.t() << ": look at its"
+                << " coefficients" << nl;
+        }
+        else
+        {
+            size[ri] = mag(fr[ri].l()) + mag(fr[ri].w()) + sum(mag(tau));
+        }
+    }
+    labelList order;
+    sortedOrder(size, order);
+    for (label k = order.size() - 1; k >= max(order.size() - 3, 0); --k)
+    {
+        const label ri = order[k];
+        if (size[ri] > 0)
+        {
+            const restraint& r = restraints[ri];
+            causes
+                << "    restraint " << r.name() << " (" << r.type()
+                << " on body " << model().name(r.bodyID()) << "): force "
+                << fr[ri].l() << " N, moment " << fr[ri].w() << " N m at t = "
+                << state.t() << nl;
+        }
+    }
+
+    // Restraints faster than the step resolves
+    for (const restraint& r : motion_.restraints())
+    {
+        const scalar T = r.naturalPeriod();
+        if (T > 0 && T < 10*deltaT)
+        {
+            causes
+                << "    restraint " << r.name() << " (" << r.type()
+                << " on body " << model().name(r.bodyID()) << "): natural"
+                << " period " << T << " s, " << T/deltaT << " steps of"
+                << " deltaT " << deltaT << ": give it 10 steps or more"
+                << " (deltaT below " << T/10 << " s; rigidBodySim -report"
+                << " lists every period)" << nl;
+        }
+    }
+
+    // Numbers of extreme magnitude in the coefficients
+    extremeEntries(coeffs_, string::null, causes);
+
+    // The last good state, to inspect or start from
+    const fileName dir
+    (
+        time_.globalPath()/"postProcessing"/name_/startTimeName_
+    );
+    const fileName lastGood(dir/"rigidBodyMotionState.lastGood");
+    if (Pstream::master())
+    {
+        mkDir(dir);
+        OFstream os(lastGood);
+        os.precision(IOstream::defaultPrecision());
+        state.write(os);
+
+        forAll(tables_, bi)
+        {
+            tables_[bi].flush();
+        }
+    }
+
+    FatalErrorInFunction
+        << "The rigid-body motion (" << name_ << ") has failed." << nl
+        << what.c_str() << nl;
+
+    if (!causes.str().empty())
+    {
+        FatalError
+            << "What may have caused it:" << nl
+            << causes.str().c_str();
+    }
+
+    FatalError
+        << "The last good state, at t = " << state.t() << ", is written to"
+        << nl << "    " << lastGood << nl
+        << "(to start from it, copy it to <time>/uniform/"
+        << "rigidBodyMotionState)" << nl
+        << exit(FatalError);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::rigidBodyDriver::rigidBodyDriver
@@ -253,6 +561,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 :
     time_(runTime),
     name_(name),
+    constructionTraps_(),
     motion_(motionDict(runTime, coeffs, externalForces), stateDict),
     report_(coeffs.getOrDefault<Switch>("report", false)),
     externalForces_(externalForces),
@@ -272,7 +581,8 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     tau_(motion_.model().nDoF(), Zero),
     fx_(motion_.model().nBodies(), Zero),
     tauR_(motion_.model().nDoF(), Zero),
-    fxR_(motion_.model().nBodies(), Zero)
+    fxR_(motion_.model().nBodies(), Zero),
+    coeffs_(coeffs)
 {
     forAll(names_, bi)
     {
@@ -291,6 +601,8 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     // A row for the start, where its forces are known (no external forces:
     // a fluid's are known only once the first solve has computed them)
     rowsPending_ = !externalForces_;
+
+    constructionTraps_.release();
 }
 
 
@@ -317,6 +629,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 
 Foam::RBD::rigidBodyDriver::~rigidBodyDriver()
 {
+    floatingPointTraps traps;
     reportCoupling();
     writeRows();
 }
@@ -336,9 +649,11 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     }
 
     fx_ = fx;
+    checkExternalForces(fx_);
 
     if (Pstream::master())
     {
+        floatingPointTraps traps;
         motion_.solve(time_.value(), time_.deltaTValue(), tau_, fx_);
 
         if (debug)
@@ -350,6 +665,9 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
     }
     Pstream::scatter(motion_.state());
 
+    // Every processor has the state: all stop together if it is not finite
+    checkState();
+
     // The row of the step is made from its last solve, when it is written
     rowsPending_ = tableEveryStep_ || time_.writeTime();
     rowsAtWriteTime_ = time_.writeTime();
@@ -358,8 +676,20 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
 
 void Foam::RBD::rigidBodyDriver::status(const label bodyID)
 {
+    floatingPointTraps traps;
     const spatialTransform CofR(motion_.X0(bodyID));
     const spatialVector vCofR(motion_.v(bodyID, Zero));
+
+    if (!allFinite(CofR.r()) || !allFinite(CofR.E()) || !allFinite(vCofR))
+    {
+        stepFailed
+        (
+            "The status of body " + model().name(bodyID) + " at t = "
+          + Foam::name(motion_.state().t()) + " is not finite: centre of"
+          + " rotation " + Foam::name(CofR.r()) + ", velocity "
+          + Foam::name(vCofR)
+        );
+    }
 
     Info<< "Rigid-body motion of the " << model().name(bodyID) << nl
         << "    Centre of rotation: " << CofR.r() << nl
@@ -403,5 +733,6 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
 bool Foam::RBD::rigidBodyDriver::read(const dictionary& coeffs)
 {
     report_ = coeffs.getOrDefault<Switch>("report", false);
+    coeffs_ = coeffs;
     return motion_.read(motionDict(time_, coeffs, externalForces_));
 }

@@ -115,6 +115,20 @@ void Foam::RBD::rigidBodyInertia::check(const dictionary& dict) const
             << exit(FatalIOError);
     }
 
+    // The inertia about the body's origin, Ic + m(|c|^2 I - c c), must be
+    // a number
+    if (!std::isfinite(m_*magSqr(c_)))
+    {
+        OSstream& os =
+            dict.found("centreOfMass")
+          ? FatalIOErrorInFunction(dict.lookup("centreOfMass"))
+          : FatalIOErrorInFunction(dict);
+        os  << "Body " << dict.dictName() << ": centre of mass " << c_
+            << " is so far from the body's origin that its inertia about"
+            << " the origin (mass times the distance squared) overflows"
+            << nl << exit(FatalIOError);
+    }
+
     // Positive definite: leading principal minors positive (scaled by the
     // trace, so the test does not depend on units)
     const scalar trI = tr(Ic_);

@@ -1,4 +1,5 @@
 #include "rigidBodyMotion.H"
+#include "rigidBodyEntries.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
 
@@ -22,7 +23,7 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
     ramp_.clear();
     if (dict.found("ramp"))
     {
-        ramp_ = Function1<scalar>::New("ramp", dict);
+        ramp_ = readFunction1<scalar>(dict, "ramp");
     }
 }
 

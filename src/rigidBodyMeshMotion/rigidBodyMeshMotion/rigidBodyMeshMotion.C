@@ -232,8 +232,9 @@ void Foam::rigidBodyMeshMotion::checkCells() const
     scalar worstRatio = GREAT;
     forAll(bandCells_, i)
     {
-        const scalar ratio =
-            displacedVolume(bandCells_[i])/bandVolumes0_[i];
+        // A volume that overflowed (a body thrown far) counts as crushed
+        const scalar r = displacedVolume(bandCells_[i])/bandVolumes0_[i];
+        const scalar ratio = std::isfinite(r) ? r : -GREAT;
         if (ratio < worstRatio)
         {
             worstRatio = ratio;
@@ -559,8 +560,13 @@ void Foam::rigidBodyMeshMotion::solve()
         bodyMeshes_[bi].X = driver_.motion().X0(bodyMeshes_[bi].bodyID);
     }
 
-    displace();
-    checkCells();
+    // The new points and their check with the traps off: a body thrown
+    // far is refused by checkCells, not by a signal in its arithmetic
+    {
+        RBD::floatingPointTraps traps;
+        displace();
+        checkCells();
+    }
 
     if (driver_.report())
     {

@@ -1,4 +1,5 @@
 #include "externalForce.H"
+#include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -52,7 +53,7 @@ bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
 {
     restraint::read(dict);
     location_ = dict.get<vector>("location");
-    force_ = Function1<vector>::New("force", dict);
+    force_ = readFunction1<vector>(dict, "force");
     return true;
 }
 

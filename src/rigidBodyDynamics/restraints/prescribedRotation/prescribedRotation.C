@@ -91,7 +91,7 @@ bool Foam::RBD::restraints::prescribedRotation::read(const dictionary& dict)
 {
     restraint::read(dict);
     axis_ = readAxis(dict, "axis");
-    omega_ = Function1<vector>::New("omega", dict);
+    omega_ = readFunction1<vector>(dict, "omega");
     return true;
 }
 
