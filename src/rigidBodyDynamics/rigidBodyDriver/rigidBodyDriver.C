@@ -439,8 +439,12 @@ void Foam::RBD::rigidBodyDriver::stepFailed(const string& what)
 {
     floatingPointTraps traps;
 
-    // Back to the start of the step, the last state that was finite
+    // Back to the start of the step, the last state that was finite, with
+    // no row or coupling report of the failed step due (where FatalError
+    // throws, as in a test, the driver can go on from there)
     motion_.state() = motion_.state0();
+    rowsPending_ = false;
+    curTimeIndex_ = -1;
     const rigidBodyModelState& state = motion_.state();
     const scalar deltaT = time_.deltaTValue();
 
