@@ -187,6 +187,20 @@ Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
 }
 
 
+Foam::string Foam::RBD::rigidBodyDriver::modelSignature() const
+{
+    const rigidBodyModel& m = model();
+    string signature;
+    for (label bodyID = 1; bodyID < m.nBodies(); ++bodyID)
+    {
+        signature +=
+            (bodyID > 1 ? " " : "") + m.name(bodyID) + ":"
+          + m.joints()[bodyID].type();
+    }
+    return signature;
+}
+
+
 Foam::word Foam::RBD::rigidBodyDriver::columnName
 (
     const label bi,
@@ -595,6 +609,26 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
         rows_[bi].setSize(nColumns(bi), Zero);
     }
 
+    // A state written by another model (one with the same number of
+    // degrees of freedom: another number is refused as it is read)
+    string written;
+    if
+    (
+        stateDict.readIfPresent("model", written)
+     && written != modelSignature()
+    )
+    {
+        FatalIOErrorInFunction(stateDict)
+            << "The state " << stateDict.name() << " was written by another"
+            << " model:" << nl << "    " << written.c_str() << nl
+            << "This model's bodies and joints:" << nl << "    "
+            << modelSignature().c_str() << nl
+            << "Start from a state this model wrote, or remove the file and"
+            << " set startFromDictionary yes; to start the bodies from the"
+            << " dictionary" << nl
+            << exit(FatalIOError);
+    }
+
     // A state that does not say when it is starts at the case's start time
     if (!coeffs.found("t") && !stateDict.found("t"))
     {
@@ -728,6 +762,7 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
     IOobject io("rigidBodyMotionState", time_.timeName(), "uniform", time_);
     io.writeHeader(os, IOdictionary::typeName);
     motion_.state().write(os);
+    os.writeEntry("model", modelSignature());
     IOobject::writeEndDivider(os);
 
     return os.good();
