@@ -343,8 +343,10 @@ void Foam::RBD::rigidBodyDriver::writeRows()
         os  << nl;
 
         // On disk at least at every write time (the row's, written at the
-        // start of the next step)
-        if (rowsAtWriteTime_)
+        // start of the next step), and at every row where a fluid acts: a
+        // CFD step costs far more than a flush, and a flow solver that
+        // dies of its own FatalError or signal leaves the rows up to it
+        if (rowsAtWriteTime_ || externalForces_)
         {
             os.flush();
         }
