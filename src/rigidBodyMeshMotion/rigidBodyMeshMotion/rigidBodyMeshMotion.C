@@ -377,7 +377,7 @@ void Foam::rigidBodyMeshMotion::checkCells() const
         FatalErrorInFunction
             << message.c_str() << nl
             << "The body has moved further than its band can absorb (about"
-            << " (outerDistance - innerDistance)/1.5, along"
+            << " (outerDistance - innerDistance)/1.5, and along a"
             << " translationDirection (translationOuterDistance -"
             << " innerDistance)/1.5), or into a wall:"
             << " the mesh would tangle.  Widen the band, give the body room"
