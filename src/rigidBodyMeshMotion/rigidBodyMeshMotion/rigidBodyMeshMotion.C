@@ -88,6 +88,34 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
                 << nl << exit(FatalIOError);
         }
 
+        // The further band of the translation along one direction
+        b.translationDirection = Zero;
+        b.translationOuterDistance = 0;
+        const bool hasDirection = bd.found("translationDirection");
+        const bool hasDistance = bd.found("translationOuterDistance");
+        if (hasDirection != hasDistance)
+        {
+            FatalIOErrorInFunction(bd)
+                << "Body " << b.name << ": translationDirection and"
+                << " translationOuterDistance go together: give both or"
+                << " neither" << nl << exit(FatalIOError);
+        }
+        if (hasDistance)
+        {
+            b.translationDirection = RBD::readAxis(bd, "translationDirection");
+            b.translationOuterDistance =
+                RBD::readPositive(bd, "translationOuterDistance");
+
+            if (b.translationOuterDistance <= b.outerDistance)
+            {
+                FatalIOErrorInFunction(bd)
+                    << "Body " << b.name << ": translationOuterDistance "
+                    << b.translationOuterDistance << " must be more than"
+                    << " outerDistance " << b.outerDistance << nl
+                    << exit(FatalIOError);
+            }
+        }
+
         b.X00 = model.X0(b.bodyID, ws00);
         b.X = driver_.motion().X0(b.bodyID);
 
@@ -107,10 +135,21 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 
     // Weights from the distance of the initial points to each body's
     // patches: 1 within innerDistance, 0 beyond outerDistance, a smooth
-    // step between; scaled where bodies' bands overlap to sum to 1
+    // step between; the translation's further band the same step out to
+    // translationOuterDistance, less the weight of the whole motion.
+    // Scaled where bodies' bands overlap, for each point by the sum over
+    // the bodies of the larger of its two weights, when that exceeds 1
     const pointMesh& pMesh = pointMesh::New(mesh());
     scalarField total(points0().size(), Zero);
     List<scalarField> allWeights(bodyMeshes_.size());
+    List<scalarField> allTranslationWeights(bodyMeshes_.size());
+
+    // 1 within inner, 0 beyond outer, smooth between
+    auto step = [](const scalar d, const scalar inner, const scalar outer)
+    {
+        const scalar s = min(max((d - inner)/(outer - inner), 0), 1);
+        return 1 - sqr(s)*(3 - 2*s);
+    };
 
     forAll(bodyMeshes_, bi)
     {
@@ -120,22 +159,30 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
         const scalarField& d = dist.primitiveField();
 
         scalarField& w = allWeights[bi];
+        scalarField& wt = allTranslationWeights[bi];
         w.setSize(d.size());
+        wt.setSize(d.size(), Zero);
 
         forAll(d, pi)
         {
-            const scalar s = min
-            (
-                max
+            w[pi] = step(d[pi], b.innerDistance, b.outerDistance);
+
+            if (b.translationOuterDistance > 0)
+            {
+                wt[pi] = max
                 (
-                    (d[pi] - b.innerDistance)
-                   /(b.outerDistance - b.innerDistance),
+                    step
+                    (
+                        d[pi],
+                        b.innerDistance,
+                        b.translationOuterDistance
+                    )
+                  - w[pi],
                     0
-                ),
-                1
-            );
-            w[pi] = 1 - sqr(s)*(3 - 2*s);
-            total[pi] += w[pi];
+                );
+            }
+
+            total[pi] += w[pi] + wt[pi];
         }
     }
 
@@ -143,25 +190,39 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
     {
         bodyMesh& b = bodyMeshes_[bi];
         const scalarField& w = allWeights[bi];
+        const scalarField& wt = allTranslationWeights[bi];
+        const bool hasTranslationBand = b.translationOuterDistance > 0;
 
         DynamicList<label> ids;
         DynamicList<scalar> ws;
+        DynamicList<scalar> wts;
         forAll(w, pi)
         {
-            if (w[pi] > 0)
+            if (w[pi] > 0 || wt[pi] > 0)
             {
+                const scalar scale = 1/max(total[pi], scalar(1));
                 ids.append(pi);
-                ws.append(w[pi]/max(total[pi], scalar(1)));
+                ws.append(w[pi]*scale);
+                if (hasTranslationBand)
+                {
+                    wts.append(wt[pi]*scale);
+                }
             }
         }
         b.pointIDs.transfer(ids);
         b.weights.transfer(ws);
+        b.translationWeights.transfer(wts);
 
         Info<< "rigidBodyMotion: body " << b.name << " moves "
             << returnReduce(b.pointIDs.size(), sumOp<label>())
             << " points (patches " << b.patches << ", innerDistance "
-            << b.innerDistance << ", outerDistance " << b.outerDistance
-            << ")" << endl;
+            << b.innerDistance << ", outerDistance " << b.outerDistance;
+        if (b.translationOuterDistance > 0)
+        {
+            Info<< ", its translation along " << b.translationDirection
+                << " out to " << b.translationOuterDistance;
+        }
+        Info<< ")" << endl;
     }
 
     // The cells that use a moved point, and their volumes now
@@ -286,7 +347,13 @@ void Foam::rigidBodyMeshMotion::checkCells() const
             << " s has moved " << moved << " m and turned " << turned
             << " degrees from where the mesh was made; a cell at " << c
             << " in its band (innerDistance " << b.innerDistance
-            << ", outerDistance " << b.outerDistance << ") would be"
+            << ", outerDistance " << b.outerDistance;
+        if (b.translationOuterDistance > 0)
+        {
+            what<< ", translationOuterDistance "
+                << b.translationOuterDistance;
+        }
+        what<< ") would be"
             << " crushed to " << worstRatio << " of its volume.";
     }
 
@@ -310,7 +377,9 @@ void Foam::rigidBodyMeshMotion::checkCells() const
         FatalErrorInFunction
             << message.c_str() << nl
             << "The body has moved further than its band can absorb (about"
-            << " (outerDistance - innerDistance)/1.5), or into a wall:"
+            << " (outerDistance - innerDistance)/1.5, and along a"
+            << " translationDirection (translationOuterDistance -"
+            << " innerDistance)/1.5), or into a wall:"
             << " the mesh would tangle.  Widen the band, give the body room"
             << " (its joint's range, a restraint), or remesh." << nl
             << exit(FatalError);
@@ -528,6 +597,17 @@ void Foam::rigidBodyMeshMotion::displace()
         {
             const label pi = b.pointIDs[i];
             disp[pi] += b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
+        }
+
+        // The translation's further band: along its direction alone
+        if (b.translationWeights.size())
+        {
+            const vector& e = b.translationDirection;
+            const vector te(((r - r00) & e)*e);
+            forAll(b.pointIDs, i)
+            {
+                disp[b.pointIDs[i]] += b.translationWeights[i]*te;
+            }
         }
     }
 
