@@ -294,6 +294,12 @@ def mutate(text, rng):
     bodies = [e for e in entries if e.children is not None
               and e.path and e.path[-1] == "bodies"]
 
+    def replaceValue(e, v, s, end, new):
+        """The value v of entry e, at text[s:end], replaced by new"""
+        return (text[:s] + new + text[end:],
+                "%s: %s -> %s" % ("/".join(e.path + [e.key]), v, new),
+                [e.key] + e.path + [new], lineOf(text, s))
+
     kinds = ["delete", "number", "number", "number", "word", "length",
              "vector", "transform", "selfParent", "cycle", "duplicate",
              "truncate"]
@@ -312,18 +318,12 @@ def mutate(text, rng):
             new = rng.choice(NUMBERS)
             if new == "NEG":
                 new = v[1:] if v.startswith("-") else "-" + v
-            names = [e.key] + e.path + [new]
-            return (text[:s] + new + text[end:],
-                    "%s: %s -> %s" % ("/".join(e.path + [e.key]), v, new),
-                    names, lineOf(text, s))
+            return replaceValue(e, v, s, end, new)
 
         if kind == "word" and wordVals:
             e, (v, s, end) = rng.choice(wordVals)
             new = rng.choice(["oops", "1", "Rq", "root", "linearSpringy"])
-            names = [e.key] + e.path + [new]
-            return (text[:s] + new + text[end:],
-                    "%s: %s -> %s" % ("/".join(e.path + [e.key]), v, new),
-                    names, lineOf(text, s))
+            return replaceValue(e, v, s, end, new)
 
         if kind == "length" and vectors:
             e, (ls, le, items) = rng.choice(vectors)
