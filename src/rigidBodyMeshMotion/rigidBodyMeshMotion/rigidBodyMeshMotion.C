@@ -593,20 +593,30 @@ void Foam::rigidBodyMeshMotion::displace()
         const vector& r00 = b.X00.r();
         const vector& r = b.X.r();
 
-        forAll(b.pointIDs, i)
+        if (b.translationWeights.empty())
         {
-            const label pi = b.pointIDs[i];
-            disp[pi] += b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
+            forAll(b.pointIDs, i)
+            {
+                const label pi = b.pointIDs[i];
+                disp[pi] += b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
+            }
         }
-
-        // The translation's further band: along its direction alone
-        if (b.translationWeights.size())
+        else
         {
+            // One pass with the translation's further band, along its
+            // direction alone; most of its points, beyond outerDistance,
+            // have no share of the whole motion
             const vector& e = b.translationDirection;
             const vector te(((r - r00) & e)*e);
             forAll(b.pointIDs, i)
             {
-                disp[b.pointIDs[i]] += b.translationWeights[i]*te;
+                const label pi = b.pointIDs[i];
+                if (b.weights[i] > 0)
+                {
+                    disp[pi] +=
+                        b.weights[i]*((R & (p0[pi] - r00)) + r - p0[pi]);
+                }
+                disp[pi] += b.translationWeights[i]*te;
             }
         }
     }
