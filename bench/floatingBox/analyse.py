@@ -83,7 +83,8 @@ def windows(case, ref, fromLine):
         s = '%g-%g s: heave %.4f m' % (a, b, h)
         hr = theirs and halfRange(theirs[0], theirs[1], a, b)
         if hr:
-            s += ' (%+.0f%% against %s)' % (100*(h/hr - 1), os.path.basename(ref))
+            s += ' (%+.0f%% against %s)' % (100*(h/hr - 1),
+                                              os.path.basename(ref))
         steps = sum(1 for t in times if a < t <= b)
         parts.append(s + ', pitch %.4f rad, mean deltaT %.3g s'
                      % (halfRange(ours[0], ours[2], a, b),
