@@ -1,19 +1,28 @@
 #!/usr/bin/env python3
-"""The figures of bench/floatingBox/coupling and decay, from a run of
-tutorials/interDyMFoam/floatingBoxInWaves (its ./results joins the pieces
-of a continued run into postProcessing/joined/rigidBodyMotion.dat).
+"""The figures of bench/floatingBox/coupling and decay, and of any run of
+tutorials/interDyMFoam/floatingBoxInWaves (slide), from the run's
+postProcessing/joined/rigidBodyMotion.dat (its ./results joins there the
+pieces of a continued run).
 
     analyse.py windows CASE REF FROMLINE
         heave and pitch half-ranges over 3.6-4.8 s and 4.2-5.4 s, and the
         heave against REF's (a run's folder, or - for none), and the mean
         deltaT over each window
-    analyse.py decay CASE FROMLINE MASS LBOX W
-        the free heave's extremes, damped period, logarithmic decrement
-        and the added mass in heave they give
+    analyse.py decay CASE FROMLINE heave|pitch STIFFNESS INERTIA
+        the free motion's extremes, damped period, logarithmic decrement
+        and the added mass (heave) or inertia (pitch) they give with the
+        hydrostatic STIFFNESS [N/m or N m/rad] and the body's own mass or
+        moment of inertia INERTIA [kg or kg m^2]
+    analyse.py slide CASE
+        the heave and pitch amplitudes (half the range) and the mean pitch
+        over windows of three wave periods (3.6 s), the last one the run's
+        last three periods (those of ./results), each earlier by half a
+        period (0.6 s), none before 3.2 s: how a run's figures depend on
+        the window
 
-Both print the piece of CASE/log.interFoam after line FROMLINE (the run
-this script is about, where a continued run's log was appended to): its
-clock time, time steps and the range of its deltaT.  Exit status 1 where
+windows and decay print the piece of CASE/log.interFoam after line FROMLINE
+(the run this script is about, where a continued run's log was appended to):
+its clock time, time steps and the range of its deltaT. Exit status 1 where
 the figures cannot be made.
 """
 import math
@@ -93,8 +102,45 @@ def windows(case, ref, fromLine):
     return ok
 
 
+# slide's windows: three wave periods (1.2 s) each, half a period apart,
+# none starting before 3.2 s (the waves reach the box at about 2 s and
+# their front has passed it by then)
+SPAN, STEP, FIRST = 3.6, 0.6, 3.2
+
+
+def meanOver(t, x, a, b):
+    """The time-weighted mean of x over a <= t <= b (trapezoidal)."""
+    w = [(ti, xi) for ti, xi in zip(t, x) if a <= ti <= b]
+    area = sum((w[i+1][0] - w[i][0])*(w[i+1][1] + w[i][1])/2
+               for i in range(len(w) - 1))
+    return area/(w[-1][0] - w[0][0])
+
+
+def slide(case):
+    m = motion(case)
+    name = os.path.basename(case)
+    if not m:
+        print('%s: no motion' % name)
+        return False
+    t, z, r = m
+    n = math.floor((t[-1] - SPAN - FIRST)/STEP + 1e-9)
+    if n < 0:
+        print('%s: ends at %g s, before %g s: no window'
+              % (name, t[-1], FIRST + SPAN))
+        return False
+    print('%s: amplitudes (half the range) over three wave periods, and'
+          ' the mean pitch' % name)
+    for i in reversed(range(n + 1)):
+        a = t[-1] - SPAN - STEP*i
+        b = a + SPAN
+        print('  %.1f-%.1f s: heave %.4f m, pitch %.4f rad, mean pitch'
+              ' %+.4f rad' % (a, b, halfRange(t, z, a, b),
+                              halfRange(t, r, a, b), meanOver(t, r, a, b)))
+    return True
+
+
 def extremes(t, z):
-    """The heave's extremes, alternately highs and lows: each the vertex of
+    """A motion's extremes, alternately highs and lows: each the vertex of
     the parabola through the sample at it and its two neighbours."""
     found = []
     for i in range(1, len(z) - 1):
@@ -122,39 +168,64 @@ def extremes(t, z):
     return found
 
 
-def decay(case, fromLine, mass, Lbox, W):
+def decay(case, fromLine, which, k, inertia):
     m = motion(case)
-    ext = extremes(m[0], m[1]) if m else []
+    q = {'heave': 1, 'pitch': 2}[which]
+    unit, added = {'heave': ('m', 'added mass %.2f kg (k = %.4g N/m, m = %g'
+                             ' kg)'),
+                   'pitch': ('rad', 'added inertia %.4f kg m^2 (k = %.4g'
+                             ' N m/rad, Iyy = %g kg m^2)')}[which]
+    ext = extremes(m[0], m[q]) if m else []
     for te, ze, high in ext:
-        print('  %s at t = %.4f s: heave %+.5f m'
-              % ('high' if high else 'low ', te, ze))
+        print('  %s at t = %.4f s: %s %+.5f %s'
+              % ('high' if high else 'low ', te, which, ze, unit))
     name = os.path.basename(case)
     if len(ext) < 4:
-        print('%s: %d heave extremes, too few to measure; %s'
-              % (name, len(ext), piece(case, fromLine)[1]))
+        print('%s: %d %s extremes, too few to measure; %s'
+              % (name, len(ext), which, piece(case, fromLine)[1]))
         return False
     swing = [abs(ext[i+1][1] - ext[i][1])/2 for i in range(len(ext) - 1)]
     Td = sum(ext[i+2][0] - ext[i][0]
              for i in range(len(ext) - 2))/(len(ext) - 2)
+    if k <= 0 or min(swing) <= 0:
+        print('%s: stiffness %g, smallest swing %g: not a decay to measure'
+              % (name, k, min(swing)))
+        return False
     delta = sum(math.log(swing[i]/swing[i+2])
                 for i in range(len(swing) - 2))/(len(swing) - 2)
+    if delta <= 0:
+        print('%s: the %s swings grow (decrement %.3f per period): not a'
+              ' decay' % (name, which, delta))
+        return False
     zeta = delta/math.sqrt(4*math.pi**2 + delta**2)
     omegaN = 2*math.pi/Td/math.sqrt(1 - zeta**2)
-    k = 1000*9.81*Lbox*W
-    print('%s: damped period %.4f s, decrement %.3f per period (damping'
-          ' ratio %.4f), heave added mass %.2f kg (k = rho g Lbox W = %.0f'
-          ' N/m, m = %g kg); first swing %.5f m; %s'
-          % (name, Td, delta, zeta, k/omegaN**2 - mass, k, mass, swing[0],
+    print(('%s: %s damped period %.4f s, decrement %.3f per period (damping'
+           ' ratio %.4f), undamped period %.4f s, ' + added
+           + '; first swing %.5f %s; %s')
+          % (name, which, Td, delta, zeta, 2*math.pi/omegaN,
+             k/omegaN**2 - inertia, k, inertia, swing[0], unit,
              piece(case, fromLine)[1]))
     return True
 
 
-if __name__ == '__main__':
-    a = sys.argv[1:]
+def parse(a):
+    """The function and its arguments from the command line; None if the
+    line is not one of the docstring's; ValueError for a bad number."""
     if len(a) == 4 and a[0] == 'windows':
-        ok = windows(a[1], a[2], int(a[3]))
-    elif len(a) == 6 and a[0] == 'decay':
-        ok = decay(a[1], int(a[2]), *map(float, a[3:]))
-    else:
+        return windows, (a[1], a[2], int(a[3]))
+    if len(a) == 2 and a[0] == 'slide':
+        return slide, (a[1],)
+    if len(a) == 6 and a[0] == 'decay' and a[3] in ('heave', 'pitch'):
+        return decay, (a[1], int(a[2]), a[3], float(a[4]), float(a[5]))
+    return None
+
+
+if __name__ == '__main__':
+    try:
+        command = parse(sys.argv[1:])
+    except ValueError as e:
+        sys.exit('analyse.py: %s\n%s' % (e, __doc__))
+    if command is None:
         sys.exit(__doc__)
-    sys.exit(0 if ok else 1)
+    function, args = command
+    sys.exit(0 if function(*args) else 1)
