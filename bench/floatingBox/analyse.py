@@ -6,8 +6,9 @@ pieces of a continued run).
 
     analyse.py windows CASE REF FROMLINE
         heave and pitch half-ranges over 3.6-4.8 s and 4.2-5.4 s, and the
-        heave against REF's (a run's folder, or - for none), and the mean
-        deltaT over each window
+        heave against REF's (a run's folder, or - for none), the mean
+        deltaT over each window, the share of its steps flagged "coupling
+        not converged" and the mean outer correctors a step
     analyse.py decay CASE FROMLINE heave|pitch STIFFNESS INERTIA
         the free motion's extremes, damped period, logarithmic decrement
         and the added mass (heave) or inertia (pitch) they give with the
@@ -51,9 +52,13 @@ def motion(case):
 
 def piece(case, fromLine):
     """The log after fromLine: the times of its steps, and a summary of its
-    clock time, time steps and deltaT range."""
+    clock and CPU time, time steps and deltaT range; sets the module's
+    FLAGGED (the times of the steps flagged "coupling not converged") and
+    OUTER (each step's time and its number of PIMPLE outer correctors)."""
+    global FLAGGED, OUTER
     f = os.path.join(case, 'log.interFoam')
-    clock, times, dts = '?', [], []
+    clock, cpu, times, dts = '?', '?', [], []
+    FLAGGED, OUTER = set(), []
     if os.path.isfile(f):
         for i, line in enumerate(open(f, errors='replace')):
             if i < fromLine:
@@ -61,13 +66,32 @@ def piece(case, fromLine):
             w = line.split()
             if line.startswith('Time = ') and len(w) == 3:
                 times.append(float(w[2]))
+                OUTER.append([times[-1], 0])
             elif line.startswith('deltaT = ') and len(w) == 3:
                 dts.append(float(w[2]))
+            elif line.startswith('PIMPLE: iteration ') and OUTER:
+                OUTER[-1][1] += 1
+            elif line.startswith('rigidBodyMotion: coupling not converged'):
+                FLAGGED.add(float(w[6].rstrip(':')))
             elif 'ClockTime = ' in line:
                 clock = w[-2]
+                cpu = w[2]
     dt = ('deltaT %.3g to %.3g s' % (min(dts), max(dts))) if dts else 'deltaT ?'
-    return times, ('interFoam clock %s s, %d steps, %s'
-                   % (clock, len(times), dt))
+    return times, ('interFoam clock %s s, CPU %s s, %d steps, %s'
+                   % (clock, cpu, len(times), dt))
+
+
+FLAGGED, OUTER = set(), []
+
+
+def correctorsAndFlags(times, a, b):
+    """Over a < t <= b: the steps, the share flagged "coupling not
+    converged", and the mean outer correctors per step."""
+    inside = [t for t in times if a < t <= b]
+    flagged = sum(1 for t in FLAGGED if a < t <= b + 1e-9)
+    outer = [n for t, n in OUTER if a < t <= b]
+    return (len(inside), flagged/max(len(inside), 1),
+            sum(outer)/max(len(outer), 1))
 
 
 def halfRange(t, x, a, b):
@@ -94,10 +118,12 @@ def windows(case, ref, fromLine):
         if hr:
             s += ' (%+.0f%% against %s)' % (100*(h/hr - 1),
                                               os.path.basename(ref))
-        steps = sum(1 for t in times if a < t <= b)
-        parts.append(s + ', pitch %.4f rad, mean deltaT %.3g s'
+        steps, flagged, outer = correctorsAndFlags(times, a, b)
+        parts.append(s + ', pitch %.4f rad, mean deltaT %.3g s, flagged'
+                     ' %.0f%% of %d steps, %.2f outer correctors a step'
                      % (halfRange(ours[0], ours[2], a, b),
-                        (b - a)/steps if steps else float('nan')))
+                        (b - a)/steps if steps else float('nan'),
+                        100*flagged, steps, outer))
     print('%s: %s; %s' % (os.path.basename(case), '; '.join(parts), summary))
     return ok
 

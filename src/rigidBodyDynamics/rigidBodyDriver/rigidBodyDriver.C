@@ -183,7 +183,8 @@ Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
       + 2*dofs_[bi].size()
       + (externalForces_ ? 6 : 0)
       + 6
-      + 2;
+      + 2
+      + (externalForces_ ? 1 : 0);
 }
 
 
@@ -230,6 +231,10 @@ Foam::word Foam::RBD::rigidBodyDriver::columnName
     }
     names.append("kineticEnergy");
     names.append("potentialEnergy");
+    if (externalForces_)
+    {
+        names.append("couplingResidual");
+    }
 
     return k < names.size() ? names[k] : word("column" + Foam::name(k + 1));
 }
@@ -272,6 +277,11 @@ void Foam::RBD::rigidBodyDriver::fillRows()
         row[k++] = body.kineticEnergy(ws.v[master]);
         row[k++] =
             -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
+        if (externalForces_)
+        {
+            label dof = -1;
+            row[k++] = bodyResidual(bi, dof);
+        }
     }
 }
 
@@ -328,7 +338,12 @@ void Foam::RBD::rigidBodyDriver::writeRows()
                 os << " fluidForce(x y z) fluidMoment(x y z)";
             }
             os  << " restraintForce(x y z) restraintMoment(x y z)"
-                << " kineticEnergy potentialEnergy" << nl;
+                << " kineticEnergy potentialEnergy";
+            if (externalForces_)
+            {
+                os << " couplingResidual";
+            }
+            os  << nl;
         }
     }
 
@@ -356,26 +371,66 @@ void Foam::RBD::rigidBodyDriver::writeRows()
 }
 
 
-void Foam::RBD::rigidBodyDriver::reportCoupling() const
+Foam::scalar Foam::RBD::rigidBodyDriver::bodyResidual
+(
+    const label bi,
+    label& dof
+) const
+{
+    scalar r = 0;
+    dof = -1;
+    for (const label i : dofs_[bi])
+    {
+        if (residual_.residual()[i] > r || dof < 0)
+        {
+            r = residual_.residual()[i];
+            dof = i;
+        }
+    }
+    return r;
+}
+
+
+void Foam::RBD::rigidBodyDriver::reportCoupling()
 {
     if (!externalForces_ || curTimeIndex_ < 0)
     {
         return;
     }
 
-    const scalar r = motion_.coupling().residual();
-
-    Info<< "rigidBodyMotion: coupling of the step to t = "
-        << motion_.state().t() << ": " << motion_.nSolves() << " solves, "
-        << motion_.coupling().type() << ", residual " << r;
-
-    if (r > couplingTolerance_)
+    const scalar t = motion_.state().t();
+    if (!residual_.endStep(motion_.state().qDdot(), t))
     {
-        Info<< ": NOT CONVERGED (couplingTolerance " << couplingTolerance_
-            << "; more outer correctors, or another"
-            << " accelerationRelaxationType, may converge it)";
+        return;
+    }
+
+    Info<< "rigidBodyMotion: coupling of the step to t = " << t << ": "
+        << motion_.nSolves() << " solves, " << motion_.coupling().type()
+        << ", residual";
+    forAll(names_, bi)
+    {
+        label dof = -1;
+        const scalar r = bodyResidual(bi, dof);
+        if (dof >= 0)
+        {
+            Info<< ' ' << names_[bi] << ' ' << r;
+        }
     }
     Info<< endl;
+
+    forAll(names_, bi)
+    {
+        label dof = -1;
+        const scalar r = bodyResidual(bi, dof);
+        if (dof >= 0 && r > residual_.tolerance())
+        {
+            Info<< "rigidBodyMotion: coupling not converged at t = " << t
+                << ": body " << names_[bi] << ", " << dofName(dof).c_str()
+                << (residual_.rotation(dof) ? ", rotation" : ", translation")
+                << ": residual " << r << " > couplingTolerance "
+                << residual_.tolerance() << endl;
+        }
+    }
 }
 
 
@@ -587,10 +642,8 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     externalForces_(externalForces),
     tableEveryStep_(true),
     curTimeIndex_(-1),
-    couplingTolerance_
-    (
-        coeffs.getOrDefault<scalar>("couplingTolerance", 0.05)
-    ),
+    residual_(coeffs, motion_.model()),
+    nCalls_(0),
     names_(coeffs.subDict("bodies").toc()),
     bodyIDs_(names_.size()),
     dofs_(names_.size()),
@@ -630,6 +683,9 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
             << " dictionary" << nl
             << exit(FatalIOError);
     }
+
+    // The motion's amplitudes for the coupling's residual, if written
+    residual_.readAmplitudes(stateDict);
 
     // A state that does not say when it is starts at the case's start time
     if (!coeffs.found("t") && !stateDict.found("t"))
@@ -672,6 +728,29 @@ Foam::RBD::rigidBodyDriver::~rigidBodyDriver()
     floatingPointTraps traps;
     reportCoupling();
     writeRows();
+
+    if (!externalForces_ || residual_.nSteps() == 0)
+    {
+        return;
+    }
+
+    Info<< "rigidBodyMotion: coupling summary: " << residual_.nFlagged()
+        << " of " << residual_.nSteps() << " steps not converged"
+        << " (couplingTolerance " << residual_.tolerance() << ")";
+    if (residual_.worstDoF() >= 0)
+    {
+        Info<< "; the largest residual " << residual_.worst() << " at t = "
+            << residual_.worstTime() << ", "
+            << dofName(residual_.worstDoF()).c_str();
+    }
+    Info<< endl;
+    if (residual_.nFlagged())
+    {
+        Info<< "rigidBodyMotion: the motion of the flagged steps is not the"
+            << " coupled answer: give more outer correctors, or let PIMPLE's"
+            << " residualControl run them on demand (rigidBodyMotion entry)"
+            << endl;
+    }
 }
 
 
@@ -686,7 +765,9 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
         writeRows();
         motion_.newTime();
         curTimeIndex_ = time_.timeIndex();
+        nCalls_ = 0;
     }
+    ++nCalls_;
 
     fx_ = fx;
     checkExternalForces(fx_);
@@ -696,14 +777,30 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
         floatingPointTraps traps;
         motion_.solve(time_.value(), time_.deltaTValue(), tau_, fx_);
 
+        if (externalForces_)
+        {
+            residual_.measure
+            (
+                motion_.coupling().distance(),
+                motion_.state().qDdot()
+            );
+        }
+
         if (debug)
         {
             Info<< "rigidBodyMotion: solve " << motion_.nSolves()
-                << ", coupling residual " << motion_.coupling().residual()
+                << ", coupling distance " << motion_.coupling().distance()
+                << ", residual " << residual_.residual()
                 << ", qDdot " << motion_.state().qDdot() << endl;
         }
     }
     Pstream::scatter(motion_.state());
+    if (externalForces_)
+    {
+        // Every processor holds the master's residual (a PIMPLE loop ended
+        // on it ends on all of them at the same corrector)
+        Pstream::scatter(residual_.residual());
+    }
 
     // Every processor has the state: all stop together if it is not finite
     checkState();
@@ -765,6 +862,10 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
     io.writeHeader(os, IOdictionary::typeName);
     motion_.state().write(os);
     os.writeEntry("model", modelSignature());
+    if (externalForces_)
+    {
+        residual_.writeAmplitudes(os);
+    }
     IOobject::writeEndDivider(os);
 
     return os.good();
@@ -775,5 +876,6 @@ bool Foam::RBD::rigidBodyDriver::read(const dictionary& coeffs)
 {
     report_ = coeffs.getOrDefault<Switch>("report", false);
     coeffs_ = coeffs;
+    residual_.read(coeffs);
     return motion_.read(motionDict(time_, coeffs, externalForces_));
 }

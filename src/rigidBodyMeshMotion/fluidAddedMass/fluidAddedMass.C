@@ -37,6 +37,12 @@ Foam::fluidAddedMass::fluidAddedMass
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::fluidAddedMass::constraint(const label patchi) const
+{
+    return polyPatch::constraintType(mesh_.boundaryMesh()[patchi].type());
+}
+
+
 Foam::wordList Foam::fluidAddedMass::patchTypes() const
 {
     // The case's pressure tells where it is fixed (an atmosphere)
@@ -201,6 +207,10 @@ void Foam::fluidAddedMass::compute
 
             for (const label patchi : patches_[bi])
             {
+                if (constraint(patchi))
+                {
+                    continue;
+                }
                 fixedGradientFvPatchScalarField& pp =
                     refCast<fixedGradientFvPatchScalarField>
                     (
@@ -234,6 +244,10 @@ void Foam::fluidAddedMass::compute
             fb_[bi] = Zero;
             for (const label patchi : patches_[bi])
             {
+                if (constraint(patchi))
+                {
+                    continue;
+                }
                 const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
                 const vectorField& Sf = mesh_.Sf().boundaryField()[patchi];
                 const scalarField& pb = p.boundaryField()[patchi];

@@ -570,6 +570,134 @@ void Foam::rigidBodyMeshMotion::giveAddedMass()
 }
 
 
+void Foam::rigidBodyMeshMotion::readResidualControl()
+{
+    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+    const word name(typeName);
+
+    residualField_.reset
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                name,
+                fvm.time().timeName(),
+                fvm,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE
+            ),
+            fvm,
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+
+    const dictionary& pimpleDict =
+        fvm.solutionDict().subOrEmptyDict("PIMPLE");
+    const dictionary& controls = pimpleDict.subOrEmptyDict("residualControl");
+
+    for (const entry& e : controls)
+    {
+        const wordRe key(e.keyword());
+
+        // An entry no field matches is counted converged by PIMPLE
+        bool matched = false;
+        for (const word& field : fvm.names())
+        {
+            matched = matched || key.match(field);
+        }
+        if (!matched)
+        {
+            WarningInFunction
+                << "PIMPLE residualControl entry " << e.keyword()
+                << " matches no field of the mesh: OpenFOAM counts it"
+                << " converged without checking it. Fields: "
+                << fvm.sortedNames<volScalarField>() << " (the rigid"
+                << " bodies' coupling: " << name << ")" << endl;
+        }
+
+        if (!key.match(name))
+        {
+            continue;
+        }
+
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(controls)
+                << "PIMPLE residualControl entry " << e.keyword()
+                << " must be a dictionary: " << e.keyword()
+                << " { tolerance 0.05; relTol 0; }" << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        const scalar tol = RBD::readPositive(d, "tolerance");
+        const scalar relTol = d.getOrDefault<scalar>("relTol", 0);
+        if (relTol != 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "PIMPLE residualControl entry " << e.keyword()
+                << ": relTol " << relTol << " must be 0. The coupling's"
+                << " residual is already relative (to the motion's"
+                << " amplitude), and the first corrector of a step has none"
+                << " of its own, so a relative drop means nothing." << nl
+                << exit(FatalIOError);
+        }
+
+        if
+        (
+            coeffDict().found("couplingTolerance")
+         && coeffDict().get<scalar>("couplingTolerance") != tol
+        )
+        {
+            FatalIOErrorInFunction(coeffDict())
+                << "couplingTolerance "
+                << coeffDict().get<scalar>("couplingTolerance")
+                << " differs from the tolerance " << tol << " of PIMPLE"
+                << " residualControl entry " << e.keyword() << " in "
+                << fvm.solutionDict().name() << ": they are one tolerance."
+                << " Give it once (residualControl's sets both)." << nl
+                << exit(FatalIOError);
+        }
+
+        if (!pimpleDict.getOrDefault<bool>("moveMeshOuterCorrectors", false))
+        {
+            WarningInFunction
+                << "PIMPLE residualControl entry " << e.keyword()
+                << ": the mesh moves only in the first outer corrector"
+                << " (moveMeshOuterCorrectors no), so the bodies are solved"
+                << " once a step and the correctors cannot converge their"
+                << " coupling; the loop will run all nOuterCorrectors."
+                << endl;
+        }
+
+        driver_.setCouplingTolerance(tol);
+        Info<< "rigidBodyMotion: outer correctors on demand: PIMPLE ends"
+            << " them once the coupling's residual is below " << tol
+            << " (residualControl " << e.keyword() << ")" << endl;
+    }
+}
+
+
+void Foam::rigidBodyMeshMotion::setSolverPerformance()
+{
+    const scalar r =
+        driver_.nCalls() == 1 ? GREAT : driver_.residual().maxResidual();
+
+    refCast<const fvMesh>(mesh()).setSolverPerformance
+    (
+        typeName,
+        SolverPerformance<scalar>
+        (
+            typeName,
+            typeName,
+            r,
+            r,
+            driver_.motion().nSolves()
+        )
+    );
+}
+
+
 void Foam::rigidBodyMeshMotion::displace()
 {
     pointField& disp = pointDisplacement_.primitiveFieldRef();
@@ -643,7 +771,17 @@ void Foam::rigidBodyMeshMotion::solve()
     fluidForces();
     giveAddedMass();
 
+    if (!test_ && !residualField_.valid())
+    {
+        readResidualControl();
+    }
+
     driver_.solve(fx_);
+
+    if (!test_)
+    {
+        setSolverPerformance();
+    }
 
     forAll(bodyMeshes_, bi)
     {
@@ -688,6 +826,7 @@ bool Foam::rigidBodyMeshMotion::read()
         addedMass_.clear();
         addedMassTimeIndex_ = -1;
         addedMassRamp_ = -1;
+        residualField_.clear();
         return driver_.read(coeffDict());
     }
 

@@ -86,8 +86,18 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     b_(model.nDoF(), Zero),
     x_(model.nDoF(), Zero),
     ws_(model),
-    gravityScale_(mag(model.g())*sqrt(totalMass(model)))
-{}
+    gravityScale_(mag(model.g())*sqrt(totalMass(model))),
+    omega_(readFactor(dict, "addedMassRelaxation")),
+    aTrial_(model.nDoF(), Zero)
+{
+    if (relaxation_ != 1)
+    {
+        Info<< "rigidBodyMotion: coupling addedMass takes Newton's whole step"
+            << " (addedMassRelaxation " << omega_ << "): accelerationRelaxation "
+            << relaxation_ << " is the constant scheme's and is not used"
+            << endl;
+    }
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -362,25 +372,6 @@ void Foam::RBD::couplingSchemes::addedMass::learn
 }
 
 
-void Foam::RBD::couplingSchemes::addedMass::newtonResidual
-(
-    const scalarField& aGiven,
-    const scalarField& a
-)
-{
-    // How far from the coupled answer the accelerations given were: the
-    // length of the step taken, x_ (the solve's own change of the
-    // accelerations overstates it by (H + A + K)/H; with the fluid's added
-    // mass divided by omega the step is about omega times Newton's)
-    scalar x2 = 0;
-    forAll(x_, i)
-    {
-        x2 += sqr(x_[i]);
-    }
-    residual_ = relativeSize(sqrt(x2), a, aGiven);
-}
-
-
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 void Foam::RBD::couplingSchemes::addedMass::correct
@@ -412,26 +403,40 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     if (useFluid_)
     {
-        // The fluid's added mass (if a mesh motion gave it), divided by the
-        // relaxation, and the solve's Jacobian: the whole step, exact for a
-        // stiff restraint's share, damped for the fluid's
+        // Newton's step with the fluid's added mass (if a mesh motion gave
+        // it) and the solve's Jacobian: the distance of aGiven from the
+        // coupled answer, and the whole step; with addedMassRelaxation
+        // below 1, A/omega on the left, a damped step
+        aTrial_ = a;
         if
         (
             (fromFluid_ || hasK_)
          && (
-                newtonStep(aGiven, a, hasK_, 1/relaxation_)
-             || newtonStep(aGiven, a, false, 1/relaxation_)
+                newtonStep(aGiven, aTrial_, hasK_, 1)
+             || newtonStep(aGiven, aTrial_, false, 1)
             )
         )
         {
-            newtonResidual(aGiven, a);
+            distance_ = x_;
+            if (omega_ == 1)
+            {
+                a = aTrial_;
+            }
+            else if
+            (
+                !newtonStep(aGiven, a, hasK_, 1/omega_)
+             && !newtonStep(aGiven, a, false, 1/omega_)
+            )
+            {
+                a = aTrial_;
+            }
         }
         else
         {
-            // Nothing known: the stock scheme
+            // Nothing known: the stock scheme at addedMassRelaxation
             forAll(a, i)
             {
-                a[i] = aGiven[i] + relaxation_*(a[i] - aGiven[i]);
+                a[i] = aGiven[i] + omega_*(a[i] - aGiven[i]);
             }
         }
         return;
@@ -439,7 +444,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     learn(aGiven, a, firstSolve);
 
-    // The fraction accelerationRelaxation of Newton's step with the learnt
+    // The fraction addedMassRelaxation of Newton's step with the learnt
     // added mass (noisy, which the whole step would follow): the stock
     // scheme where the added mass is small, and where it is not an error
     // that shrinks by (1 - omega) per solve whatever the density
@@ -452,10 +457,10 @@ void Foam::RBD::couplingSchemes::addedMass::correct
         )
     )
     {
-        newtonResidual(aGiven, a);
+        distance_ = x_;
         forAll(a, i)
         {
-            a[i] = aGiven[i] + relaxation_*(a[i] - aGiven[i]);
+            a[i] = aGiven[i] + omega_*(a[i] - aGiven[i]);
         }
         return;
     }
@@ -466,7 +471,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
         r_[i] = a[i] - aGiven[i];
     }
 
-    scalar omega = relaxation_;
+    scalar omega = omega_;
     const scalar rH = normH(r_);
     if (gravityScale_ > 0 && omega*rH > gravityScale_)
     {
@@ -554,5 +559,6 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
 void Foam::RBD::couplingSchemes::addedMass::write(Ostream& os) const
 {
     couplingScheme::write(os);
+    os.writeEntry("addedMassRelaxation", omega_);
     os.writeEntry("addedMass", word(useFluid_ ? "fluid" : "learnt"));
 }

@@ -12,16 +12,14 @@ namespace RBD
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
-namespace
+Foam::scalar Foam::RBD::couplingScheme::readFactor
+(
+    const dictionary& dict,
+    const word& key
+)
 {
-
-//- Read a factor in (0, 1], 1 if absent
-Foam::scalar readFactor(const Foam::dictionary& dict, const Foam::word& key)
-{
-    using namespace Foam;
-
     const scalar f = dict.getOrDefault<scalar>(key, 1);
 
     if (!(f > 0 && f <= 1))
@@ -33,8 +31,6 @@ Foam::scalar readFactor(const Foam::dictionary& dict, const Foam::word& key)
 
     return f;
 }
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -48,7 +44,7 @@ Foam::RBD::couplingScheme::couplingScheme
     model_(model),
     relaxation_(readFactor(dict, "accelerationRelaxation")),
     damping_(readFactor(dict, "accelerationDamping")),
-    residual_(0)
+    distance_(model.nDoF(), Zero)
 {}
 
 
@@ -82,28 +78,6 @@ Foam::autoPtr<Foam::RBD::couplingScheme> Foam::RBD::couplingScheme::New
 }
 
 
-// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
-
-Foam::scalar Foam::RBD::couplingScheme::relativeSize
-(
-    const scalar r,
-    const scalarField& a,
-    const scalarField& aGiven
-) const
-{
-    scalar a2 = 0, g2 = 0;
-    forAll(a, i)
-    {
-        a2 += sqr(a[i]);
-        g2 += sqr(aGiven[i]);
-    }
-
-    // Relative to the accelerations, or to gravity's where they are
-    // smaller (a floating body's accelerations are small and noisy)
-    return r/max(max(sqrt(max(a2, g2)), mag(model_.g())), VSMALL);
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::RBD::couplingScheme::relax
@@ -114,12 +88,10 @@ void Foam::RBD::couplingScheme::relax
     const bool firstSolve
 )
 {
-    scalar r2 = 0;
     forAll(a, i)
     {
-        r2 += sqr(a[i] - aGiven[i]);
+        distance_[i] = a[i] - aGiven[i];
     }
-    residual_ = relativeSize(sqrt(r2), a, aGiven);
 
     if (debug)
     {
