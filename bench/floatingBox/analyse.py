@@ -72,7 +72,7 @@ def piece(case, fromLine):
             elif line.startswith('PIMPLE: iteration ') and OUTER:
                 OUTER[-1][1] += 1
             elif line.startswith('rigidBodyMotion: coupling not converged'):
-                FLAGGED.add(float(w[6].rstrip(':')))
+                FLAGGED.add(float(w[7].rstrip(':')))
             elif 'ClockTime = ' in line:
                 clock = w[-2]
                 cpu = w[2]

@@ -795,15 +795,18 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
         }
     }
     Pstream::scatter(motion_.state());
+
+    // Every processor has the state: all stop together if it is not finite
+    checkState();
+
     if (externalForces_)
     {
         // Every processor holds the master's residual (a PIMPLE loop ended
         // on it ends on all of them at the same corrector)
+        floatingPointTraps traps;
         Pstream::scatter(residual_.residual());
+        residual_.solved();
     }
-
-    // Every processor has the state: all stop together if it is not finite
-    checkState();
 
     // The row of the step is made from its last solve, when it is written
     rowsPending_ = tableEveryStep_ || time_.writeTime();

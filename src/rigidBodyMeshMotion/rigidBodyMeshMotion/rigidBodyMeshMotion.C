@@ -681,7 +681,9 @@ void Foam::rigidBodyMeshMotion::readResidualControl()
 void Foam::rigidBodyMeshMotion::setSolverPerformance()
 {
     const scalar r =
-        driver_.nCalls() == 1 ? GREAT : driver_.residual().maxResidual();
+        driver_.nCalls() == 1
+      ? GREAT
+      : driver_.residual().maxResidual();
 
     refCast<const fvMesh>(mesh()).setSolverPerformance
     (

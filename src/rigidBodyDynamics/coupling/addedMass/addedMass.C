@@ -92,9 +92,9 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
 {
     if (relaxation_ != 1)
     {
-        Info<< "rigidBodyMotion: coupling addedMass takes Newton's whole step"
-            << " (addedMassRelaxation " << omega_ << "): accelerationRelaxation "
-            << relaxation_ << " is the constant scheme's and is not used"
+        Info<< "rigidBodyMotion: coupling addedMass, addedMassRelaxation "
+            << omega_ << ": accelerationRelaxation " << relaxation_
+            << " is the constant scheme's and is not used (docs/coupling.md)"
             << endl;
     }
 }

@@ -63,7 +63,8 @@ Foam::RBD::couplingResidual::couplingResidual
     peakPrev_(model.nDoF(), Zero),
     sign_(model.nDoF(), Zero),
     residual_(model.nDoF(), Zero),
-    measured_(false),
+    nMeasured_(0),
+    max_(0),
     nSteps_(0),
     nFlagged_(0),
     worst_(-1),
@@ -101,7 +102,13 @@ void Foam::RBD::couplingResidual::measure
         );
         residual_[i] = mag(d[i])/max(scale, VSMALL);
     }
-    measured_ = true;
+}
+
+
+void Foam::RBD::couplingResidual::solved()
+{
+    max_ = residual_.size() ? max(residual_) : 0;
+    ++nMeasured_;
 }
 
 
@@ -111,8 +118,8 @@ bool Foam::RBD::couplingResidual::endStep
     const scalar t
 )
 {
-    const bool measured = measured_;
-    measured_ = false;
+    const bool measured = nMeasured_ > 0;
+    nMeasured_ = 0;
 
     if (measured)
     {
