@@ -680,9 +680,14 @@ void Foam::rigidBodyMeshMotion::readResidualControl()
 
 void Foam::rigidBodyMeshMotion::setSolverPerformance()
 {
+    // The step's 1st solve has the previous step's forces: never converged.
+    // Its 2nd has those of the fluid's 1st corrector, whose own fields have
+    // not converged: its residual counts twice (where it was below the
+    // tolerance, the 3rd solve's came out up to 2.4 times larger on
+    // floatingSphere)
     const scalar r =
-        driver_.nCalls() == 1
-      ? GREAT
+        driver_.nCalls() == 1 ? GREAT
+      : driver_.nCalls() == 2 ? 2*driver_.residual().maxResidual()
       : driver_.residual().maxResidual();
 
     refCast<const fvMesh>(mesh()).setSolverPerformance

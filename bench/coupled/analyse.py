@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""bench/coupled/run's tables and plot.
+
+    analyse.py box|floatingObject LIST PNG
+
+LIST: lines "NAME FOLDER", the settings run (bench/coupled/run).  Prints a
+markdown table of each setting's error against the converged reference
+(n10-co0.125) and against 10 correctors at its own step (the correctors'
+error), its CPU time, outer correctors a step and steps flagged "coupling
+not converged"; writes PNG, the error against the CPU time (gnuplot).
+Exit status 1 where a run or the reference is missing.
+"""
+import bisect
+import os
+import subprocess
+import sys
+
+
+def table(path, columns):
+    """Columns of a body's table, found by the header's names."""
+    names, rows = None, []
+    for line in open(path):
+        if line.startswith('#'):
+            f = line[1:].split()
+            if f and f[0] == 't':
+                names = f
+        elif line.strip():
+            rows.append([float(x) for x in line.split()])
+    idx = [names.index(c) for c in columns]
+    return [[r[i] for r in rows] for i in idx]
+
+
+def logFigures(log, fromLine=0):
+    """CPU time, steps, mean outer correctors a step, steps flagged."""
+    cpu, steps, outer, flagged, fixed = None, 0, [], 0, None
+    for i, line in enumerate(open(log, errors='replace')):
+        if i < fromLine:
+            continue
+        w = line.split()
+        if line.startswith('Time = ') and len(w) == 3:
+            steps += 1
+            outer.append(0)
+        elif line.startswith('PIMPLE: iteration ') and outer:
+            outer[-1] += 1
+        elif line.startswith('rigidBodyMotion: coupling not converged'):
+            flagged += 1
+        elif line.startswith('ExecutionTime = '):
+            cpu = float(w[2])
+    outer = [n for n in outer if n]
+    return cpu, steps, sum(outer)/max(len(outer), 1), flagged
+
+
+def interp(t, x, s):
+    j = bisect.bisect_left(t, s)
+    if j <= 0:
+        return x[0]
+    if j >= len(t):
+        return x[-1]
+    a = (s - t[j-1])/(t[j] - t[j-1])
+    return x[j-1] + a*(x[j] - x[j-1])
+
+
+def halfRange(t, x, a, b):
+    w = [xi for ti, xi in zip(t, x) if a <= ti <= b]
+    return (max(w) - min(w))/2 if w else None
+
+
+def boxFigures(folder):
+    """Heave and pitch amplitudes over the two windows, and the
+    continuation's log figures."""
+    f = os.path.join(folder, 'postProcessing', 'joined', 'rigidBodyMotion.dat')
+    t, z, r = table(f, ['t', 'q1', 'q2'])
+    amps = [(halfRange(t, z, a, b), halfRange(t, r, a, b))
+            for a, b in ((3.6, 4.8), (4.2, 5.4))]
+    base = os.path.join(os.path.dirname(folder), 'base', 'log.interFoam')
+    fromLine = sum(1 for _ in open(base, errors='replace'))
+    return amps, logFigures(os.path.join(folder, 'log.interFoam'), fromLine)
+
+
+def foFigures(folder):
+    f = os.path.join(folder, 'postProcessing', 'rigidBodyMotion', '0',
+                     'floatingObject.dat')
+    t, y, r = table(f, ['t', 'q0', 'q1'])
+    return (t, y, r), logFigures(os.path.join(folder, 'log.interFoam'))
+
+
+def main(case, listFile, png):
+    runs = [l.split() for l in open(listFile) if l.strip()]
+    figures = {}
+    for name, folder in runs:
+        try:
+            figures[name] = (boxFigures if case == 'box' else foFigures)(folder)
+        except (OSError, ValueError, IndexError) as e:
+            print('%s %s: no figures (%s)' % (case, name, e))
+    ref = figures.get('n10-co0.125')
+    if ref is None:
+        print('%s: the reference n10-co0.125 is missing' % case)
+        return False
+
+    def errors(motion, against):
+        if case == 'box':
+            return [max(abs(m[k]/a[k] - 1) for m, a in zip(motion, against))
+                    for k in (0, 1)]
+        t, y, r = motion
+        tr, yr, rr = against
+        out = []
+        for x, xr in ((y, yr), (r, rr)):
+            span = max(xr) - min(xr)
+            out.append(max(abs(xi - interp(tr, xr, ti))
+                           for ti, xi in zip(t, x))/span)
+        return out
+
+    what = ('heave', 'pitch') if case == 'box' else ('sway', 'pitch')
+    print('| setting | %s error | %s error | %s, correctors\' error | CPU [s] '
+          '| steps | outer correctors a step | steps flagged |'
+          % (what[0], what[1], what[0]))
+    print('|---|---|---|---|---|---|---|---|')
+    rows = []
+    for name, folder in runs:
+        if name not in figures:
+            continue
+        motion, (cpu, steps, outer, flagged) = figures[name]
+        e = errors(motion, ref[0])
+        co = name.split('-co')[1]
+        same = figures.get('n10-co' + co)
+        ec = errors(motion, same[0])[0] if same else float('nan')
+        rows.append((name, e, cpu))
+        print('| %s | %.1f%% | %.1f%% | %.1f%% | %.0f | %d | %.2f | %d |'
+              % (name, 100*e[0], 100*e[1], 100*ec, cpu or 0, steps, outer,
+                 flagged))
+
+    data = png + '.dat'
+    with open(data, 'w') as f:
+        for name, e, cpu in rows:
+            if name != 'n10-co0.125' and cpu:
+                f.write('%g %g %g "%s"\n' % (cpu, max(100*e[0], 0.01),
+                                            max(100*e[1], 0.01), name))
+    script = (
+        'set terminal pngcairo size 900,650\n'
+        'set output "%s"\n'
+        'set logscale xy\n'
+        'set xlabel "interFoam CPU time [s]"\n'
+        'set ylabel "error against the converged reference [%%]"\n'
+        'set title "%s: error against cost (bench/coupled/run %s)"\n'
+        'set key outside bottom center horizontal\n'
+        'plot "%s" using 1:2 with points pt 7 title "%s", '
+        '"" using 1:2:4 with labels offset 0,1 font ",8" notitle, '
+        '"" using 1:3 with points pt 5 title "%s"\n'
+        % (png, case, case, data, what[0], what[1]))
+    subprocess.run(['gnuplot'], input=script, text=True, check=True)
+    os.remove(data)
+    print('Written %s' % png)
+    return True
+
+
+if __name__ == '__main__':
+    if len(sys.argv) != 4 or sys.argv[1] not in ('box', 'floatingObject'):
+        sys.exit(__doc__)
+    sys.exit(0 if main(*sys.argv[1:]) else 1)
