@@ -626,7 +626,7 @@ void Foam::rigidBodyMeshMotion::readResidualControl()
             FatalIOErrorInFunction(controls)
                 << "PIMPLE residualControl entry " << e.keyword()
                 << " must be a dictionary: " << e.keyword()
-                << " { tolerance 0.05; relTol 0; }" << nl
+                << " { tolerance 0.1; relTol 0; }" << nl
                 << exit(FatalIOError);
         }
         const dictionary& d = e.dict();

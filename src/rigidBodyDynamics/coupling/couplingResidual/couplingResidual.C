@@ -55,7 +55,7 @@ Foam::RBD::couplingResidual::couplingResidual
     const rigidBodyModel& model
 )
 :
-    tolerance_(0.05),
+    tolerance_(0.1),
     floor_(0.1),
     floorRotation_(0.1),
     rotation_(rotations(model)),
@@ -81,7 +81,7 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
 {
     tolerance_ = dict.found("couplingTolerance")
         ? readPositive(dict, "couplingTolerance")
-        : 0.05;
+        : 0.1;
     floor_ = readOrDefault(dict, "couplingFloor", 0.1);
     floorRotation_ = readOrDefault(dict, "couplingFloorRotation", 0.1);
 }
