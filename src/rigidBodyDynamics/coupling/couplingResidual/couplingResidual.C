@@ -90,7 +90,7 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
 void Foam::RBD::couplingResidual::measure
 (
     const scalarField& d,
-    const scalarField& aGiven
+    const scalarField& a
 )
 {
     forAll(residual_, i)
@@ -98,7 +98,7 @@ void Foam::RBD::couplingResidual::measure
         const scalar scale = max
         (
             max(peak_[i], peakPrev_[i]),
-            max(mag(aGiven[i]), rotation_[i] ? floorRotation_ : floor_)
+            max(mag(a[i]), rotation_[i] ? floorRotation_ : floor_)
         );
         residual_[i] = mag(d[i])/max(scale, VSMALL);
     }
