@@ -130,11 +130,26 @@ int main(int argc, char *argv[])
 
     if (!(runTime.value() < runTime.endTime().value()))
     {
-        FatalIOErrorInFunction(runTime.controlDict())
+        // With startFrom latestTime, an earlier run's last time is the
+        // usual cause: say how to start again
+        const dictionary& cd = runTime.controlDict();
+        const bool earlierRun =
+            cd.getOrDefault<word>("startFrom", "latestTime") == "latestTime"
+         && runTime.value() > cd.getOrDefault<scalar>("startTime", 0);
+
+        FatalIOErrorInFunction(cd)
             << "Entry endTime " << runTime.endTime().value() << " is not"
             << " after the time the run starts from, " << runTime.timeName()
-            << ": nothing would run" << nl
-            << exit(FatalIOError);
+            << ": nothing would run";
+        if (earlierRun)
+        {
+            FatalIOError
+                << nl << "startFrom latestTime starts from the last time an"
+                << " earlier run wrote here.  To run from the start again,"
+                << " remove its times: ./Allclean in a tutorial, or"
+                << " foamListTimes -rm";
+        }
+        FatalIOError << nl << exit(FatalIOError);
     }
 
     const bool everyStep = args.found("everyStep");
@@ -146,9 +161,15 @@ int main(int argc, char *argv[])
 
     const RBD::rigidBodyModel& model = driver.model();
 
-    Info<< "Model: " << model.bodyNames().size() - 1 << " bodies, "
-        << model.nDoF() << " degrees of freedom, g " << model.g() << nl
-        << endl;
+    const label nBodies = model.bodyNames().size() - 1;
+    const label nMerged = nBodies - (model.nBodies() - 1);
+    Info<< "Model: " << countOf(nBodies, "body", "bodies").c_str();
+    if (nMerged)
+    {
+        Info<< " (" << nMerged << " merged into another)";
+    }
+    Info<< ", " << countOf(model.nDoF(), "degree", "degrees").c_str()
+        << " of freedom, g " << model.g() << nl << endl;
 
     autoPtr<rigidBodySimReport> modelReport;
     if (args.found("report"))
@@ -178,10 +199,12 @@ int main(int argc, char *argv[])
         report();
     }
 
-    // Progress at most every 5% of the run
+    // Progress at most every 5% of the run, and at most once a second of
+    // wall time but for the last line
     const scalar t0 = runTime.value();
     const scalar span = max(runTime.endTime().value() - t0, VSMALL);
     scalar nextProgress = 0.05;
+    scalar lastProgress = 0;
     label nSteps = 0;
     label nSolves = 0;
     clockTime clock;
@@ -215,12 +238,27 @@ int main(int argc, char *argv[])
         const scalar done = (runTime.value() - t0)/span;
         if (done >= nextProgress - SMALL && !everyStep)
         {
+            const bool last = !runTime.run();
             const scalar wall = clock.elapsedTime();
-            const scalar left = done > 0 ? max(wall*(1 - done)/done, 0) : 0;
-            Info<< "rigidBodySim: t = " << runTime.timeName() << " s ("
-                << label(100*done + 0.5) << "%), " << nSteps << " steps, "
-                << label(wall > 0 ? nSteps/wall : 0) << " steps/s, about "
-                << 0.1*label(10*left + 0.5) << " s left" << endl;
+            if (last || wall - lastProgress >= 1)
+            {
+                lastProgress = wall;
+                const scalar left =
+                    done > 0 ? max(wall*(1 - done)/done, 0) : 0;
+                Info<< "rigidBodySim: t = " << runTime.timeName() << " s ("
+                    << label(100*done + 0.5) << "%), " << nSteps
+                    << " steps, " << label(wall > 0 ? nSteps/wall : 0)
+                    << " steps/s";
+                if (!last && left >= 1)
+                {
+                    Info<< ", about " << label(left + 0.5) << " s left";
+                }
+                else if (!last)
+                {
+                    Info<< ", under a second left";
+                }
+                Info<< endl;
+            }
             while (nextProgress <= done + SMALL)
             {
                 nextProgress += 0.05;
