@@ -235,10 +235,16 @@ int main(int argc, char *argv[])
             driver.writeState();
         }
 
+        // The last step: as Time::run() tells it, without calling run(),
+        // which would execute the function objects once more
+        const bool last =
+            !(
+                runTime.value()
+              < runTime.endTime().value() - 0.5*runTime.deltaTValue()
+            );
         const scalar done = (runTime.value() - t0)/span;
-        if (done >= nextProgress - SMALL && !everyStep)
+        if (!everyStep && (last || done >= nextProgress - SMALL))
         {
-            const bool last = !runTime.run();
             const scalar wall = clock.elapsedTime();
             if (last || wall - lastProgress >= 1)
             {
