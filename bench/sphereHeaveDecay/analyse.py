@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""bench/sphereHeaveDecay/run's table and plot.
+
+    analyse.py RUNS PNG
+
+RUNS: the folder of the runs (runs/<name>, each a copy of the tutorial
+after its ./Allrun).  Prints a markdown table: each run's mesh, period and
+decay rate (the tutorial's ./results, postProcessing/heaveDecay) and their
+errors against the experiment, the interFoam CPU time, time steps, outer
+correctors a step, steps flagged "coupling not converged" and the largest
+coupling residual of the run (its log's coupling summary).  Writes PNG:
+the 0.1 D runs' errors against their CPU time, beside the costs Kramer et
+al. (2021) give for the OpenFOAM cases of OES Task 10.  Runs missing are
+left out; exit status 1 if none is there.
+"""
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', 'coupled'))
+from analyse import logFigures  # noqa: E402  (bench/coupled/analyse.py)
+
+ORDER = ['d0.1', 'd0.3', 'd0.5', 'coarse', 'fine', 'co0.25', 'fixed3']
+WHAT = {
+    'd0.1': '0.1 D, default mesh, maxCo 0.5, on demand (tol 0.1)',
+    'd0.3': '0.3 D, default mesh, maxCo 0.5, on demand',
+    'd0.5': '0.5 D, default mesh, maxCo 0.5, on demand',
+    'coarse': '0.1 D, coarse mesh',
+    'fine': '0.1 D, fine mesh',
+    'co0.25': '0.1 D, maxCo 0.25',
+    'fixed3': '0.1 D, 3 fixed outer correctors',
+}
+
+
+def dictionary(path):
+    out = {}
+    for line in open(path):
+        m = re.match(r'\s*(\w+)\s+([-+0-9.eE]+);', line)
+        if m:
+            out[m.group(1)] = float(m.group(2))
+    return out
+
+
+def cells(folder):
+    for line in open(os.path.join(folder, 'log.checkMesh')):
+        if line.strip().startswith('cells:'):
+            return int(line.split()[1])
+    return 0
+
+
+def largestResidual(log):
+    value = None
+    for line in open(log, errors='replace'):
+        m = re.search(r'coupling summary: .*the largest residual ([-+0-9.eE]+)',
+                      line)
+        if m:
+            value = float(m.group(1))
+    return value
+
+
+def main(runs, png):
+    rows = []
+    for name in ORDER:
+        folder = os.path.join(runs, name)
+        figures = os.path.join(folder, 'postProcessing', 'heaveDecay')
+        log = os.path.join(folder, 'log.interFoam')
+        if not (os.path.isfile(figures) and os.path.isfile(log)):
+            continue
+        f = dictionary(figures)
+        cpu, steps, outer, flagged = logFigures(log)
+        rows.append((name, f, cpu, steps, outer, flagged,
+                     largestResidual(log), cells(folder)))
+    if not rows:
+        print('bench/sphereHeaveDecay: no runs in %s' % runs)
+        return False
+
+    print('| run | cells | period [s] | error | decay rate [1/s] | error '
+          '| CPU [s] | steps | outer correctors a step | steps flagged '
+          '| largest residual |')
+    print('|---|---|---|---|---|---|---|---|---|---|---|')
+    points = []
+    for name, f, cpu, steps, outer, flagged, res, n in rows:
+        eT = eR = None
+        if 'periodExperiment' in f and 'period' in f:
+            eT = 100*(f['period']/f['periodExperiment'] - 1)
+            eR = 100*(f['decayRate']/f['decayRateExperiment'] - 1)
+        print('| %s (%s) | %d | %s | %s | %s | %s | %.0f | %d | %.2f | %d '
+              '| %s |'
+              % (name, WHAT[name], n,
+                 '%.4f' % f['period'] if 'period' in f else '-',
+                 '%+.2f%%' % eT if eT is not None else '-',
+                 '%.3f' % f['decayRate'] if 'decayRate' in f else '-',
+                 '%+.1f%%' % eR if eR is not None else '-',
+                 cpu or 0, steps, outer, flagged,
+                 '%.3g' % res if res is not None else '-'))
+        if name not in ('d0.3', 'd0.5') and eT is not None and cpu:
+            points.append((cpu, abs(eT), abs(eR), name))
+
+    if not points:
+        return True
+    data = png + '.dat'
+    with open(data, 'w') as out:
+        for cpu, eT, eR, name in points:
+            out.write('%g %g %g "%s"\n' % (cpu, max(eT, 0.01), max(eR, 0.01),
+                                          name))
+    # The paper's OpenFOAM cases (OES Task 10): 3D, 6-12 million cells,
+    # 3,000-6,500 CPU hours, the period within 0.54-0.82%; a 2D wedge of
+    # 20,000 cells on one laptop core (its time not given), within 0.19%
+    script = '''
+set terminal pngcairo size 900,650
+set output "%s"
+set logscale xy
+set xrange [30:1e8]
+set yrange [0.01:100]
+set xlabel "CPU time [s]"
+set ylabel "|error| against the experiment [%%]"
+set title "Floating sphere, 0.1 D heave decay: error against cost (bench/sphereHeaveDecay/run)"
+set key outside bottom center horizontal
+set object 1 rect from 3000*3600,0.54 to 6500*3600,0.82 fc rgb "#cccccc" fs solid 0.5
+set label 1 "3D OpenFOAM, 6-12 M cells\\n(Kramer et al. 2021): period" at 3000*3600,2.5 right font ",9"
+set arrow 1 from 1e7,0.19 to 1e8,0.19 nohead dt 2
+set label 2 "their 2D wedge, 20,000 cells, one laptop core: period 0.19%%" at 1e8,0.13 right font ",9"
+plot "%s" using 1:2 with points pt 7 ps 1.5 title "period (this library)", \\
+     "" using 1:2:4 with labels offset 0,1 font ",8" notitle, \\
+     "" using 1:3 with points pt 5 ps 1.5 title "decay rate (this library)"
+''' % (png, data)
+    subprocess.run(['gnuplot'], input=script, text=True, check=True)
+    os.remove(data)
+    print('Written %s' % png)
+    return True
+
+
+if __name__ == '__main__':
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    sys.exit(0 if main(*sys.argv[1:]) else 1)
