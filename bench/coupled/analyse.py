@@ -31,8 +31,11 @@ def table(path, columns):
 
 
 def logFigures(log, fromLine=0):
-    """CPU time, steps, mean outer correctors a step, steps flagged."""
+    """CPU time, steps, mean outer correctors a step, steps flagged.  A
+    run continued after a stop (CONTINUE=yes) has a piece of log for each
+    start, each with its own clock: the CPU time is their sum."""
     cpu, steps, outer, flagged, fixed = None, 0, [], 0, None
+    done = 0.0
     for i, line in enumerate(open(log, errors='replace')):
         if i < fromLine:
             continue
@@ -45,7 +48,12 @@ def logFigures(log, fromLine=0):
         elif line.startswith('rigidBodyMotion: coupling not converged'):
             flagged += 1
         elif line.startswith('ExecutionTime = '):
-            cpu = float(w[2])
+            t = float(w[2])
+            if cpu is not None and t < cpu:
+                done += cpu
+            cpu = t
+    if cpu is not None:
+        cpu += done
     outer = [n for n in outer if n]
     return cpu, steps, sum(outer)/max(len(outer), 1), flagged
 
@@ -70,6 +78,9 @@ def boxFigures(folder):
     continuation's log figures."""
     f = os.path.join(folder, 'postProcessing', 'joined', 'rigidBodyMotion.dat')
     t, z, r = table(f, ['t', 'q1', 'q2'])
+    if not t or t[-1] < 5.4 - 1e-6:
+        raise ValueError('its table ends at %s s, before 5.4 s'
+                         % (t[-1] if t else '-'))
     amps = [(halfRange(t, z, a, b), halfRange(t, r, a, b))
             for a, b in ((3.6, 4.8), (4.2, 5.4))]
     base = os.path.join(os.path.dirname(folder), 'base', 'log.interFoam')
