@@ -184,7 +184,25 @@ Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
       + (externalForces_ ? 6 : 0)
       + 6
       + 2
-      + (externalForces_ ? 1 : 0);
+      + (externalForces_ ? 1 : 0)
+      + restraintColumns(bi).size();
+}
+
+
+Foam::wordList Foam::RBD::rigidBodyDriver::restraintColumns
+(
+    const label bi
+) const
+{
+    wordList names;
+    for (const restraint& r : motion_.restraints())
+    {
+        if (r.bodyID() == bodyIDs_[bi])
+        {
+            names.append(r.tableColumns());
+        }
+    }
+    return names;
 }
 
 
@@ -235,6 +253,7 @@ Foam::word Foam::RBD::rigidBodyDriver::columnName
     {
         names.append("couplingResidual");
     }
+    names.append(restraintColumns(bi));
 
     return k < names.size() ? names[k] : word("column" + Foam::name(k + 1));
 }
@@ -281,6 +300,13 @@ void Foam::RBD::rigidBodyDriver::fillRows()
         {
             label dof = -1;
             row[k++] = bodyResidual(bi, dof);
+        }
+        for (const restraint& r : motion_.restraints())
+        {
+            if (r.bodyID() == id)
+            {
+                r.tableValues(row, k);
+            }
         }
     }
 }
@@ -342,6 +368,10 @@ void Foam::RBD::rigidBodyDriver::writeRows()
             if (externalForces_)
             {
                 os << " couplingResidual";
+            }
+            for (const word& c : restraintColumns(bi))
+            {
+                os << ' ' << c;
             }
             os  << nl;
         }

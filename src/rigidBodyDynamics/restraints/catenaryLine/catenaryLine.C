@@ -1,0 +1,249 @@
+/*---------------------------------------------------------------------------*\
+    catenaryLine: a quasi-static mooring line (catenaryLine.H)
+\*---------------------------------------------------------------------------*/
+
+#include "catenaryLine.H"
+#include "rigidBodyModel.H"
+#include "rigidBodyEntries.H"
+#include "addToRunTimeSelectionTable.H"
+#include "unitConversion.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(catenaryLine, 0);
+
+    addToRunTimeSelectionTable
+    (
+        restraint,
+        catenaryLine,
+        dictionary
+    );
+}
+}
+}
+
+
+namespace
+{
+    // The line's properties from the dictionary (checked by read())
+    Foam::RBD::elasticCatenary::properties lineProperties
+    (
+        const Foam::dictionary& dict
+    )
+    {
+        using namespace Foam;
+        RBD::elasticCatenary::properties p;
+        p.L = RBD::readPositive(dict, "length");
+        p.w = RBD::readNonNegative(dict, "wetWeight");
+        p.EA = RBD::readPositive(dict, "EA");
+        p.CB =
+            dict.found("seabedFriction")
+          ? RBD::readNonNegative(dict, "seabedFriction")
+          : 0;
+        p.grounded = false;
+        return p;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::RBD::restraints::catenaryLine::up() const
+{
+    const vector& g = model_.g();
+    const scalar magG = mag(g);
+    return magG > VSMALL ? -g/magG : vector(0, 0, 1);
+}
+
+
+void Foam::RBD::restraints::catenaryLine::solve(const vector& p) const
+{
+    up_ = up();
+    const elasticCatenary::properties& lp = line_.props();
+
+    if (hasSeabed_ && (p & up_) < seabed_ - 1e-6*lp.L)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "catenaryLine " << name_ << ": the fairlead (refAttachmentPt "
+            << refAttachmentPt_ << ", at " << p << ") is below the seabed "
+            << seabed_ << " by " << seabed_ - (p & up_) << " m"
+            << nl << exit(FatalIOError);
+    }
+
+    const vector r(p - anchor_);
+    const scalar h = r & up_;
+    const vector horizontal(r - h*up_);
+    const scalar l = mag(horizontal);
+
+    fairlead_ = p;
+    if (l > VSMALL)
+    {
+        across_ = horizontal/l;
+    }
+
+    if (!line_.solve(l, h))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "catenaryLine " << name_ << ": no catenary found for the"
+            << " fairlead " << l << " m from the anchor horizontally and "
+            << h << " m above it (length " << lp.L << ", wetWeight " << lp.w
+            << ", EA " << lp.EA << ")" << nl << exit(FatalIOError);
+    }
+
+    if
+    (
+        hasSeabed_ && !lp.grounded
+     && (anchor_ & up_) + line_.lowestHeight() < seabed_ - 1e-6*lp.L
+    )
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "catenaryLine " << name_ << ": the line hangs from an anchor"
+            << " above the seabed " << seabed_ << " down to "
+            << (anchor_ & up_) + line_.lowestHeight() << ", below it: a"
+            << " line resting on the seabed between two raised ends is not"
+            << " modelled.  Put the anchor on the seabed (its height "
+            << seabed_ << "), or shorten the line" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::restraints::catenaryLine::catenaryLine
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model),
+    anchor_(Zero),
+    refAttachmentPt_(Zero),
+    hasSeabed_(false),
+    seabed_(0),
+    line_(lineProperties(dict)),
+    fairlead_(Zero),
+    across_(1, 0, 0),
+    up_(0, 0, 1)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::RBD::restraints::catenaryLine::shapePoint
+(
+    const scalar s
+) const
+{
+    const elasticCatenary::point pt(line_.shape(s));
+    return anchor_ + pt.x*across_ + pt.z*up_;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    solve(p);
+    addForce(fx, p, -line_.H()*across_ - line_.V()*up_);
+}
+
+
+Foam::wordList Foam::RBD::restraints::catenaryLine::tableColumns() const
+{
+    return wordList
+    {
+        name_ + ".tension",
+        name_ + ".groundedLength",
+        name_ + ".fairleadAngle"
+    };
+}
+
+
+void Foam::RBD::restraints::catenaryLine::tableValues
+(
+    scalarField& row,
+    label& k
+) const
+{
+    row[k++] = line_.tension();
+    row[k++] = line_.groundedLength();
+    row[k++] = radToDeg(atan2(line_.V(), line_.H()));
+}
+
+
+bool Foam::RBD::restraints::catenaryLine::read(const dictionary& dict)
+{
+    restraint::read(dict);
+
+    anchor_ = dict.get<vector>("anchor");
+    refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
+
+    elasticCatenary::properties p(lineProperties(dict));
+
+    hasSeabed_ = dict.readIfPresent("seabed", seabed_);
+    if (hasSeabed_)
+    {
+        if (!std::isfinite(seabed_))
+        {
+            FatalIOErrorInFunction(dict.lookup("seabed"))
+                << "Entry seabed " << seabed_ << " in " << dict.dictName()
+                << " must be a finite height" << nl << exit(FatalIOError);
+        }
+        const scalar anchorHeight = anchor_ & up();
+        if (anchorHeight < seabed_ - 1e-6*p.L)
+        {
+            FatalIOErrorInFunction(dict.lookup("anchor"))
+                << "Entry anchor " << anchor_ << " in " << dict.dictName()
+                << " is below the seabed " << seabed_ << " by "
+                << seabed_ - anchorHeight << " m: put it on the seabed or"
+                << " above it" << nl << exit(FatalIOError);
+        }
+        p.grounded = anchorHeight <= seabed_ + 1e-6*p.L;
+    }
+    else if (p.CB > 0)
+    {
+        FatalIOErrorInFunction(dict.lookup("seabedFriction"))
+            << "Entry seabedFriction " << p.CB << " in " << dict.dictName()
+            << " needs a seabed (entry seabed, its height)" << nl
+            << exit(FatalIOError);
+    }
+
+    line_ = elasticCatenary(p);
+
+    return true;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::write(Ostream& os) const
+{
+    restraint::write(os);
+    const elasticCatenary::properties& p = line_.props();
+    os.writeEntry("anchor", anchor_);
+    os.writeEntry("refAttachmentPt", refAttachmentPt_);
+    os.writeEntry("length", p.L);
+    os.writeEntry("wetWeight", p.w);
+    os.writeEntry("EA", p.EA);
+    if (hasSeabed_)
+    {
+        os.writeEntry("seabed", seabed_);
+        os.writeEntry("seabedFriction", p.CB);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,415 @@
+/*---------------------------------------------------------------------------*\
+    elasticCatenary: the quasi-static elastic catenary (elasticCatenary.H)
+\*---------------------------------------------------------------------------*/
+
+#include "elasticCatenary.H"
+#include "scalar.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::elasticCatenary::position
+(
+    const scalar H,
+    const scalar V,
+    scalar& x,
+    scalar& z,
+    scalar J[4]
+) const
+{
+    const scalar L = p_.L;
+    const scalar w = p_.w;
+    const scalar EA = p_.EA;
+
+    const scalar a = V/H;
+    const scalar ra = sqrt(1 + sqr(a));
+
+    if (p_.grounded && V < w*L)
+    {
+        // Part of the line on the seabed: L_B = L - V/w
+        const scalar LB = L - V/w;
+
+        x = LB + H/w*asinh(a) + H*L/EA;
+        z = H/w*(ra - 1) + sqr(V)/(2*EA*w);
+
+        J[0] = (asinh(a) - a/ra)/w + L/EA;     // dx/dH
+        J[1] = (1/ra - 1)/w;                    // dx/dV
+        J[2] = (1/ra - 1)/w;                    // dz/dH
+        J[3] = a/(ra*w) + V/(EA*w);             // dz/dV
+
+        if (p_.CB > 0)
+        {
+            // The friction's change of the grounded part's stretch
+            const scalar c = p_.CB*w/(2*EA);
+            const scalar d = LB - H/(p_.CB*w);
+            x += c*(-sqr(LB) + d*max(d, scalar(0)));
+            J[1] += 2*c*LB/w;
+            if (d > 0)
+            {
+                J[0] += -2*c*d/(p_.CB*w);
+                J[1] += -2*c*d/w;
+            }
+        }
+    }
+    else
+    {
+        // The whole line lifted: V_A = V - w L at the anchor
+        const scalar b = (V - w*L)/H;
+        const scalar rb = sqrt(1 + sqr(b));
+
+        x = H/w*(asinh(a) - asinh(b)) + H*L/EA;
+        z = H/w*(ra - rb) + (V*L - 0.5*w*sqr(L))/EA;
+
+        J[0] = (asinh(a) - asinh(b) - a/ra + b/rb)/w + L/EA;
+        J[1] = (1/ra - 1/rb)/w;
+        J[2] = (1/ra - 1/rb)/w;
+        J[3] = (a/ra - b/rb)/w + L/EA;
+    }
+}
+
+
+void Foam::RBD::elasticCatenary::estimate
+(
+    const scalar l,
+    const scalar h,
+    scalar& H,
+    scalar& V
+) const
+{
+    const scalar L = p_.L;
+    const scalar lambda =
+        L <= sqrt(sqr(l) + sqr(h))
+      ? 0.2
+      : sqrt(3*((sqr(L) - sqr(h))/sqr(l) - 1));
+
+    H = max(mag(p_.w*l/(2*lambda)), 1e-6*p_.w*L);
+    V = 0.5*p_.w*(h/tanh(lambda) + L);
+}
+
+
+bool Foam::RBD::elasticCatenary::newton
+(
+    const scalar l,
+    const scalar h,
+    scalar& H,
+    scalar& V
+)
+{
+    const scalar tol = 1e-12*(p_.L + l + mag(h));
+
+    for (iterations_ = 0; iterations_ < 100; ++iterations_)
+    {
+        scalar x, z, J[4];
+        position(H, V, x, z, J);
+
+        const scalar fx = x - l;
+        const scalar fz = z - h;
+
+        if (!std::isfinite(fx) || !std::isfinite(fz))
+        {
+            return false;
+        }
+        if (mag(fx) + mag(fz) <= tol)
+        {
+            return true;
+        }
+
+        const scalar det = J[0]*J[3] - J[1]*J[2];
+        if (mag(det) < VSMALL)
+        {
+            return false;
+        }
+        scalar dH = -(J[3]*fx - J[1]*fz)/det;
+        scalar dV = -(J[0]*fz - J[2]*fx)/det;
+
+        // Keep H positive: at most a tenth of it left
+        if (H + dH <= 0)
+        {
+            const scalar alpha = 0.9*H/(-dH);
+            dH *= alpha;
+            dV *= alpha;
+        }
+
+        H += dH;
+        V += dV;
+
+        if (mag(dH) + mag(dV) <= 1e-15*(H + mag(V)))
+        {
+            return true;
+        }
+    }
+
+    return false;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::elasticCatenary::elasticCatenary(const properties& p)
+:
+    p_(p),
+    H_(0),
+    V_(0),
+    l_(0),
+    h_(0),
+    started_(false),
+    iterations_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::RBD::elasticCatenary::solve(const scalar l, const scalar h)
+{
+    const scalar L = p_.L;
+    const scalar w = p_.w;
+    const scalar EA = p_.EA;
+
+    l_ = l;
+    h_ = h;
+    iterations_ = 0;
+
+    if (w <= 0)
+    {
+        // Weightless: straight, a spring of stiffness EA/L once taut
+        const scalar d = sqrt(sqr(l) + sqr(h));
+        const scalar T = d > L ? EA*(d/L - 1) : 0;
+        H_ = d > 0 ? T*l/d : 0;
+        V_ = d > 0 ? T*h/d : 0;
+        started_ = false;
+        return true;
+    }
+
+    if (l <= 1e-9*L)
+    {
+        // Vertical: no horizontal tension
+        H_ = 0;
+        const scalar VTaut = (h - L)*EA/L + 0.5*w*L;
+        if (VTaut >= w*L)
+        {
+            V_ = VTaut;                         // taut, lifted from the anchor
+        }
+        else if (p_.grounded)
+        {
+            // Hanging from the fairlead down to the seabed: h = s (1 +
+            // w s/(2 EA)) for its hanging length s
+            V_ = h > 0 ? (sqrt(1 + 2*w*h/EA) - 1)*EA : 0;
+        }
+        else
+        {
+            // Hanging clear in a U: the strand from the fairlead down to the
+            // lowest point is a = (L + h/(1 + w L/(2 EA)))/2 long
+            V_ = 0.5*w*(L + h/(1 + 0.5*w*L/EA));
+        }
+        started_ = false;
+        return true;
+    }
+
+    scalar H = H_, V = V_;
+    if (!started_ || H <= 0 || !newton(l, h, H, V))
+    {
+        estimate(l, h, H, V);
+        if (!newton(l, h, H, V))
+        {
+            return false;
+        }
+    }
+
+    H_ = H;
+    V_ = V;
+    started_ = true;
+    return true;
+}
+
+
+Foam::scalar Foam::RBD::elasticCatenary::tension() const
+{
+    return sqrt(sqr(H_) + sqr(V_));
+}
+
+
+void Foam::RBD::elasticCatenary::anchorTension(scalar& HA, scalar& VA) const
+{
+    const scalar LB = groundedLength();
+    if (LB > 0)
+    {
+        HA = max(H_ - p_.CB*p_.w*LB, scalar(0));
+        VA = 0;
+    }
+    else if (p_.w > 0 && H_ == 0 && !p_.grounded && V_ < p_.w*p_.L)
+    {
+        // A vertical U: the anchor's strand hangs below it
+        HA = 0;
+        VA = -(p_.w*p_.L - V_);
+    }
+    else
+    {
+        HA = H_;
+        VA = V_ - p_.w*p_.L;
+    }
+}
+
+
+Foam::scalar Foam::RBD::elasticCatenary::groundedLength() const
+{
+    if (!p_.grounded || p_.w <= 0 || V_ >= p_.w*p_.L)
+    {
+        return 0;
+    }
+    return p_.L - V_/p_.w;
+}
+
+
+Foam::scalar Foam::RBD::elasticCatenary::lowestHeight() const
+{
+    const scalar w = p_.w;
+    const scalar VA = V_ - w*p_.L;
+
+    if (w <= 0 || p_.grounded || VA >= 0)
+    {
+        return min(scalar(0), h_);
+    }
+    if (H_ == 0)
+    {
+        // A vertical U: its lowest point, the anchor's strand below it
+        return shape((p_.L - V_/w)).z;
+    }
+    if (V_ <= 0)
+    {
+        return min(scalar(0), h_);
+    }
+    // The lowest point, where the vertical tension is zero: s = -V_A/w
+    return min(scalar(0), shape(-VA/w).z);
+}
+
+
+Foam::RBD::elasticCatenary::point Foam::RBD::elasticCatenary::shape
+(
+    const scalar s
+) const
+{
+    const scalar L = p_.L;
+    const scalar w = p_.w;
+    const scalar EA = p_.EA;
+    const scalar H = H_;
+    const scalar V = V_;
+
+    point pt;
+
+    if (w <= 0)
+    {
+        // Straight
+        const scalar d = sqrt(sqr(l_) + sqr(h_));
+        const scalar T = tension();
+        const scalar f = (s*(1 + T/EA))/max(d, VSMALL);
+        pt.x = T > 0 ? s/L*l_ : f*l_;
+        pt.z = T > 0 ? s/L*h_ : f*h_;
+        pt.T = T;
+        return pt;
+    }
+
+    const scalar LB = groundedLength();
+
+    if (H == 0)
+    {
+        // Vertical
+        pt.x = 0;
+        if (LB > 0)
+        {
+            // Piled on the seabed at the anchor, then hanging
+            const scalar sigma = max(s - LB, scalar(0));
+            pt.z = sigma + w*sqr(sigma)/(2*EA);
+            pt.T = w*sigma;
+        }
+        else if (!p_.grounded && V < w*L)
+        {
+            // A U: the anchor's strand of b = L - V/w down, then up
+            const scalar b = L - V/w;
+            const scalar sb = min(s, b);
+            pt.z = -(sb + w*(b*sb - 0.5*sqr(sb))/EA);
+            const scalar sigma = max(s - b, scalar(0));
+            pt.z += sigma + w*sqr(sigma)/(2*EA);
+            pt.T = s < b ? w*(b - s) : w*sigma;
+        }
+        else
+        {
+            const scalar VA = V - w*L;
+            pt.z = s + (VA*s + 0.5*w*sqr(s))/EA;
+            pt.T = VA + w*s;
+        }
+        return pt;
+    }
+
+    if (LB > 0)
+    {
+        // The grounded part's stretch at arc length sg <= L_B
+        auto grounded = [&](const scalar sg, scalar& T)
+        {
+            if (p_.CB > 0)
+            {
+                const scalar c = p_.CB*w;
+                const scalar s0 = LB - H/c;
+                T = c*max(sg - s0, scalar(0));
+                return
+                    sg
+                  + 0.5*c*(sqr(max(sg - s0, scalar(0)))
+                  - sqr(max(-s0, scalar(0))))/EA;
+            }
+            T = H;
+            return sg + H*sg/EA;
+        };
+
+        if (s <= LB)
+        {
+            pt.x = grounded(s, pt.T);
+            pt.z = 0;
+            return pt;
+        }
+
+        scalar TB;
+        const scalar sigma = s - LB;
+        const scalar q = w*sigma/H;
+        pt.x = grounded(LB, TB) + H/w*asinh(q) + H*sigma/EA;
+        pt.z = H/w*(sqrt(1 + sqr(q)) - 1) + w*sqr(sigma)/(2*EA);
+        pt.T = sqrt(sqr(H) + sqr(w*sigma));
+        return pt;
+    }
+
+    const scalar VA = V - w*L;
+    const scalar Vs = VA + w*s;
+    pt.x = H/w*(asinh(Vs/H) - asinh(VA/H)) + H*s/EA;
+    pt.z =
+        H/w*(sqrt(1 + sqr(Vs/H)) - sqrt(1 + sqr(VA/H)))
+      + (VA*s + 0.5*w*sqr(s))/EA;
+    pt.T = sqrt(sqr(H) + sqr(Vs));
+    return pt;
+}
+
+
+void Foam::RBD::elasticCatenary::stiffness(scalar K[4]) const
+{
+    // Central differences of solves on a copy (one-sided in l at a
+    // vertical line); for reports, not the time step
+    const scalar delta = 1e-6*max(p_.L, scalar(1));
+    elasticCatenary c(*this);
+
+    const scalar l0 = l_, h0 = h_;
+    const scalar la = max(l0 - delta, scalar(0));
+    const scalar lb = l0 + delta;
+
+    c.solve(lb, h0);
+    const scalar Hlb = c.H(), Vlb = c.V();
+    c.solve(la, h0);
+    const scalar Hla = c.H(), Vla = c.V();
+    c.solve(l0, h0 + delta);
+    const scalar Hhb = c.H(), Vhb = c.V();
+    c.solve(l0, h0 - delta);
+    const scalar Hha = c.H(), Vha = c.V();
+
+    K[0] = (Hlb - Hla)/(lb - la);
+    K[1] = (Hhb - Hha)/(2*delta);
+    K[2] = (Vlb - Vla)/(lb - la);
+    K[3] = (Vhb - Vha)/(2*delta);
+}
+
+
+// ************************************************************************* //
