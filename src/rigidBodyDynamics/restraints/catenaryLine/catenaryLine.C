@@ -62,10 +62,15 @@ Foam::vector Foam::RBD::restraints::catenaryLine::up() const
 }
 
 
-void Foam::RBD::restraints::catenaryLine::solve(const vector& p) const
+Foam::vector Foam::RBD::restraints::catenaryLine::solve
+(
+    elasticCatenary& c,
+    const vector& p,
+    vector& across
+) const
 {
     up_ = up();
-    const elasticCatenary::properties& lp = line_.props();
+    const elasticCatenary::properties& lp = c.props();
 
     if (hasSeabed_ && (p & up_) < seabed_ - 1e-6*lp.L)
     {
@@ -81,13 +86,12 @@ void Foam::RBD::restraints::catenaryLine::solve(const vector& p) const
     const vector horizontal(r - h*up_);
     const scalar l = mag(horizontal);
 
-    fairlead_ = p;
     if (l > VSMALL)
     {
-        across_ = horizontal/l;
+        across = horizontal/l;
     }
 
-    if (!line_.solve(l, h))
+    if (!c.solve(l, h))
     {
         FatalIOErrorInFunction(coeffs_)
             << "catenaryLine " << name_ << ": no catenary found for the"
@@ -99,18 +103,20 @@ void Foam::RBD::restraints::catenaryLine::solve(const vector& p) const
     if
     (
         hasSeabed_ && !lp.grounded
-     && (anchor_ & up_) + line_.lowestHeight() < seabed_ - 1e-6*lp.L
+     && (anchor_ & up_) + c.lowestHeight() < seabed_ - 1e-6*lp.L
     )
     {
         FatalIOErrorInFunction(coeffs_)
             << "catenaryLine " << name_ << ": the line hangs from an anchor"
             << " above the seabed " << seabed_ << " down to "
-            << (anchor_ & up_) + line_.lowestHeight() << ", below it: a"
+            << (anchor_ & up_) + c.lowestHeight() << ", below it: a"
             << " line resting on the seabed between two raised ends is not"
             << " modelled.  Put the anchor on the seabed (its height "
             << seabed_ << "), or shorten the line" << nl
             << exit(FatalIOError);
     }
+
+    return -c.H()*across - c.V()*up_;
 }
 
 
@@ -157,9 +163,36 @@ void Foam::RBD::restraints::catenaryLine::restrain
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
-    solve(p);
-    addForce(fx, p, -line_.H()*across_ - line_.V()*up_);
+    fairlead_ = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
+    addForce(fx, fairlead_, solve(line_, fairlead_, across_));
+}
+
+
+Foam::vector Foam::RBD::restraints::catenaryLine::force() const
+{
+    return -line_.H()*across_ - line_.V()*up_;
+}
+
+
+Foam::tensor Foam::RBD::restraints::catenaryLine::forceGradient() const
+{
+    const scalar delta = 1e-3;
+    tensor G(Zero);
+    for (direction k = 0; k < 3; ++k)
+    {
+        vector dp(Zero);
+        dp[k] = delta;
+        elasticCatenary c(line_);
+        vector across(across_);
+        const vector Fb(solve(c, fairlead_ + dp, across));
+        const vector Fa(solve(c, fairlead_ - dp, across));
+        const vector dF((Fb - Fa)/(2*delta));
+        for (direction i = 0; i < 3; ++i)
+        {
+            G[3*i + k] = dF[i];
+        }
+    }
+    return G;
 }
 
 
