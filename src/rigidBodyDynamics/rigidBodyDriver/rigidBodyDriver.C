@@ -901,6 +901,19 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
     }
     IOobject::writeEndDivider(os);
 
+    // The restraints' own output (a catenaryLine's shape)
+    if (Pstream::master())
+    {
+        const fileName outDir
+        (
+            time_.globalPath()/"postProcessing"/name_/time_.timeName()
+        );
+        for (const restraint& r : motion_.restraints())
+        {
+            r.writeOutput(outDir, time_.value());
+        }
+    }
+
     return os.good();
 }
 

@@ -7,6 +7,9 @@
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 #include "unitConversion.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -135,6 +138,8 @@ Foam::RBD::restraints::catenaryLine::catenaryLine
     hasSeabed_(false),
     seabed_(0),
     line_(lineProperties(dict)),
+    writeShape_(true),
+    nShapePoints_(51),
     fairlead_(Zero),
     across_(1, 0, 0),
     up_(0, 0, 1)
@@ -219,9 +224,60 @@ void Foam::RBD::restraints::catenaryLine::tableValues
 }
 
 
+void Foam::RBD::restraints::catenaryLine::writeOutput
+(
+    const fileName& dir,
+    const scalar t
+) const
+{
+    if (!writeShape_)
+    {
+        return;
+    }
+    mkDir(dir);
+    OFstream os(dir/name_ + ".vtk");
+    os.precision(IOstream::defaultPrecision());
+    const label n = nShapePoints_;
+    const scalar L = line_.props().L;
+
+    os  << "# vtk DataFile Version 2.0" << nl
+        << "catenaryLine " << name_ << " at t = " << t << nl
+        << "ASCII" << nl
+        << "DATASET POLYDATA" << nl
+        << "POINTS " << n << " double" << nl;
+    for (label i = 0; i < n; ++i)
+    {
+        const vector p(shapePoint(L*i/(n - 1)));
+        os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
+    }
+    os  << "LINES 1 " << n + 1 << nl << n;
+    for (label i = 0; i < n; ++i)
+    {
+        os  << ' ' << i;
+    }
+    os  << nl << "POINT_DATA " << n << nl
+        << "SCALARS tension double 1" << nl
+        << "LOOKUP_TABLE default" << nl;
+    for (label i = 0; i < n; ++i)
+    {
+        os  << line_.shape(L*i/(n - 1)).T << nl;
+    }
+}
+
+
 bool Foam::RBD::restraints::catenaryLine::read(const dictionary& dict)
 {
     restraint::read(dict);
+
+    writeShape_ = dict.getOrDefault<Switch>("writeShape", true);
+    nShapePoints_ = dict.getOrDefault<label>("nShapePoints", 51);
+    if (nShapePoints_ < 2)
+    {
+        FatalIOErrorInFunction(dict.lookup("nShapePoints"))
+            << "Entry nShapePoints " << nShapePoints_ << " in "
+            << dict.dictName() << " must be 2 or more" << nl
+            << exit(FatalIOError);
+    }
 
     anchor_ = dict.get<vector>("anchor");
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
@@ -276,6 +332,8 @@ void Foam::RBD::restraints::catenaryLine::write(Ostream& os) const
         os.writeEntry("seabed", seabed_);
         os.writeEntry("seabedFriction", p.CB);
     }
+    os.writeEntry("writeShape", Switch(writeShape_));
+    os.writeEntry("nShapePoints", nShapePoints_);
 }
 
 
