@@ -32,6 +32,8 @@ Description
 #include "testModels.H"
 #include "catenaryLine.H"
 #include "elasticCatenary.H"
+#include "lumpedLine.H"
+#include "IStringStream.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 
@@ -345,6 +347,181 @@ void table()
         "table: the fairlead angle from the horizontal, 0.1%");
 }
 
+
+// * * * * * * * * * * * * * * * The dynamic line  * * * * * * * * * * * * //
+
+//- A line's properties: no drag, added mass, damping or seabed
+RBD::lumpedLine::properties bare
+(
+    const label N,
+    const scalar L,
+    const scalar mu,
+    const scalar d,
+    const scalar EA,
+    const vector& g
+)
+{
+    RBD::lumpedLine::properties p;
+    p.N = N; p.L = L; p.mu = mu; p.d = d; p.EA = EA; p.BA = 0;
+    p.Cdn = p.Cdt = p.Can = p.Cat = 0;
+    p.rho = 1000; p.g = g;
+    p.hasSeabed = false; p.seabed = 0; p.kSeabed = 0; p.cSeabed = 0;
+    return p;
+}
+
+
+//- BA for a damping ratio of each segment's axial mode
+scalar dampingBA(const RBD::lumpedLine::properties& p, const scalar zeta)
+{
+    return zeta*2*(p.L/p.N)*sqrt(p.EA*p.mu);
+}
+
+
+void axialMode()
+{
+    // A weightless line stretched 1% between fixed ends, released in its
+    // first axial mode: the discrete chain's exact eigenvector
+    // sin(pi i/N); continuum period 2 L/sqrt(EA/mu)
+    const label N = 40;
+    const scalar L = 170, mu = 165, EA = 500e6;
+    RBD::lumpedLine::properties p(bare(N, L, mu, 0.396, EA, Zero));
+    const vector anchor(Zero), fairlead(1.01*L, 0, 0);
+    RBD::lumpedLine line(p, anchor, fairlead, 0);
+
+    const scalar T = 2*L/sqrt(EA/mu);
+    const scalar V = 0.1*constant::mathematical::twoPi/T;  // 0.1 m amplitude
+    {
+        vectorField x(N + 1), v(N + 1, Zero);
+        for (label i = 0; i <= N; ++i)
+        {
+            x[i] = fairlead*i/N;
+            v[i] = vector(V*sin(constant::mathematical::pi*i/N), 0, 0);
+        }
+        OStringStream os;
+        os.writeEntry("t", scalar(0));
+        os.writeEntry("x", x);
+        os.writeEntry("v", v);
+        IStringStream is(os.str());
+        line.readState(dictionary(is));
+    }
+
+    const scalar E0 = line.energy();
+    const scalar dt = T/200;
+    const scalar xMid = 0.5*fairlead.x();
+    scalar prev = 0, tPrev = 0, Emax = 0;
+    DynamicList<scalar> crossings;
+    for (label n = 1; n <= 2000; ++n)
+    {
+        const scalar t = n*dt;
+        line.advance(t, fairlead);
+        line.commit();
+        const scalar u = line.x()[N/2].x() - xMid;
+        if (n > 1 && (u < 0) != (prev < 0))
+        {
+            crossings.append(tPrev - prev*(t - tPrev)/(u - prev));
+        }
+        prev = u;
+        tPrev = t;
+        Emax = max(Emax, mag(line.energy() - E0));
+    }
+    const label nc = crossings.size();
+    const scalar period =
+        nc >= 3 ? 2*(crossings[nc - 1] - crossings[0])/(nc - 1) : 0;
+    checkRel(period, T, 1e-2, "lumpedLine: the first axial mode's period"
+        " against 2 L/sqrt(EA/mu) = " + std::to_string(T) + " s, 1%");
+    checkRel(E0 + Emax, E0, 1e-3, "lumpedLine: no damping, no drag: the"
+        " energy over 10 periods, 0.1%");
+    check(line.nSubSteps() >= 1 && dt/line.nSubSteps() <= line.maxSubStep(),
+        "lumpedLine: sub-steps at most 0.2 of a segment's transit time ("
+      + std::to_string(line.nSubSteps()) + " a step)");
+}
+
+
+void quasiStatic()
+{
+    // OC3-Hywind's line (77.7066 kg/m, 0.09 m: 698.094 N/m in water), 20
+    // segments, damped (ratio 0.5), with drag, on a seabed; the fairlead
+    // moved 10 m away from the anchor over 100 s and held 20 s: its
+    // tension against the catenary's at the same place
+    const label N = 20;
+    RBD::lumpedLine::properties p
+    (
+        bare(N, 902.2, 77.7066, 0.09, 384.243e6, vector(0, 0, -9.80665))
+    );
+    p.rho = 1025;
+    p.BA = dampingBA(p, 0.5);
+    p.Cdn = 1.6; p.Cdt = 0.1; p.Can = 1; p.Cat = 0;
+    p.hasSeabed = true; p.seabed = -320; p.kSeabed = 3e6; p.cSeabed = 3e5;
+
+    const vector anchor(-848.67, 0, -320), f0(0, 0, -70);
+    RBD::lumpedLine line(p, anchor, f0, 0);
+
+    RBD::elasticCatenary::properties cp{902.2, 698.094, 384.243e6, 0, true};
+    RBD::elasticCatenary c(cp);
+
+    const scalar dt = 0.05;
+    scalar worst = 0;
+    for (label n = 1; n <= 2400; ++n)
+    {
+        const scalar t = n*dt;
+        const scalar s = min(t/100, scalar(1));
+        const vector f(f0 + vector(10*0.5*(1 - cos(constant::mathematical::pi*s)), 0, 0));
+        line.advance(t, f);
+        line.commit();
+        if (n % 200 == 0)
+        {
+            c.solve(f.x() - anchor.x(), f.z() - anchor.z());
+            const vector F(line.force());
+            const vector Fc(-c.H(), 0, -c.V());
+            worst = max(worst, mag(F - Fc)/mag(Fc));
+        }
+    }
+    checkAbs(worst, 0, 1e-2, "lumpedLine under a slow motion (10 m in"
+        " 100 s): the fairlead force against the catenary's, 1% of it");
+}
+
+
+void loweLangleyDynamic()
+{
+    // Lowe and Langley's line, 40 segments, settled for 60 s from the
+    // catenary: the forces within 0.2 kN of MoorDyn's verification values
+    const label N = 40;
+    RBD::lumpedLine::properties p
+    (
+        bare(N, 170, 165, 0.396, 500e6, vector(0, 0, -9.807))
+    );
+    p.BA = dampingBA(p, 0.5);
+    p.Cdn = 1; p.Cdt = 0; p.Can = 1; p.Cat = 0;
+    p.hasSeabed = true; p.seabed = -100; p.kSeabed = 3e6; p.cSeabed = 3e5;
+
+    const vector anchor(-100, 0, -55), fairlead(0, 0, -5);
+    RBD::lumpedLine line(p, anchor, fairlead, 0);
+    for (label n = 1; n <= 600; ++n)
+    {
+        line.advance(0.1*n, fairlead);
+        line.commit();
+    }
+    const vector F(line.force());
+    checkAbs(F.x(), -11400, 200, "lumpedLine, Lowe and Langley's line"
+        " settled: force on the fairlead x (-11.40 kN), 0.2 kN");
+    checkAbs(F.z(), -45710, 200, "lumpedLine, Lowe and Langley's line"
+        " settled: force on the fairlead z (-45.71 kN), 0.2 kN");
+
+    // On the anchor: the first segment's pull and the anchor node's share
+    // of the weight in water
+    const vectorField& x = line.x();
+    const vector t0((x[1] - x[0])/mag(x[1] - x[0]));
+    const scalar A = 0.25*constant::mathematical::pi*sqr(p.d);
+    const vector FA
+    (
+        line.tension(0)*t0 + 0.5*(p.L/N)*(p.mu - p.rho*A)*p.g
+    );
+    checkAbs(FA.x(), 11400, 200, "lumpedLine, Lowe and Langley's line"
+        " settled: force on the anchor x (11.40 kN), 0.2 kN");
+    checkAbs(FA.z(), -24040, 200, "lumpedLine, Lowe and Langley's line"
+        " settled: force on the anchor z (-24.04 kN), 0.2 kN");
+}
+
 } // End namespace mooringTest
 
 
@@ -355,6 +532,9 @@ int main(int argc, char *argv[])
     mooringTest::weightless();
     mooringTest::states();
     mooringTest::table();
+    mooringTest::axialMode();
+    mooringTest::quasiStatic();
+    mooringTest::loweLangleyDynamic();
     return test::testResult();
 }
 
