@@ -122,10 +122,15 @@ def seedCases(root):
                  os.path.join(base, "constant", "rigidBodyMotionDict")},
         0.01, 0.001)
 
-    for tut in ("pendulum", "springMass"):
+    for tut in ("pendulum", "springMass", "mooredSpar"):
         c = os.path.join(TOP, "tutorials", "rigidBodySim", tut, "constant")
         add(tut, {"constant/rigidBodyMotionDict":
                   os.path.join(c, "rigidBodyMotionDict")}, 0.1, 0.001)
+
+    # The mooring lines: a buoy on a dynamic and a quasi-static line
+    c = os.path.join(TOP, "test", "cases", "mooredBuoy", "constant")
+    add("mooredBuoy", {"constant/rigidBodyMotionDict":
+                       os.path.join(c, "rigidBodyMotionDict")}, 0.1, 0.01)
 
     tutDir = os.path.join(TOP, "tutorials", "interDyMFoam")
     for tut in sorted(os.listdir(tutDir)):
@@ -135,9 +140,11 @@ def seedCases(root):
             files = {"constant/dynamicMeshDict": dmd}
             if os.path.isfile(os.path.join(c, "g")):
                 files["constant/g"] = os.path.join(c, "g")
-            params = os.path.join(tutDir, tut, "system", "caseParameters")
-            if os.path.isfile(params):
-                files["system/caseParameters"] = params
+            # The files of parameters a tutorial's dictionaries include
+            for name in ("caseParameters", "parameters"):
+                params = os.path.join(tutDir, tut, "system", name)
+                if os.path.isfile(params):
+                    files["system/" + name] = params
             add(tut, files, 0.05, 0.001)
 
     src = os.path.join(TOP, "deps", "OpenFOAM")

@@ -894,6 +894,7 @@ bool Foam::RBD::rigidBodyDriver::writeState() const
     IOobject io("rigidBodyMotionState", time_.timeName(), "uniform", time_);
     io.writeHeader(os, IOdictionary::typeName);
     motion_.state().write(os);
+    motion_.writeRestraintStates(os);
     os.writeEntry("model", modelSignature());
     if (externalForces_)
     {

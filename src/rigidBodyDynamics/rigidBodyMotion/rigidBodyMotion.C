@@ -431,6 +431,17 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
         state_.read(stateDict);
         model_.checkState(state_.q(), stateDict);
         state0_ = state_;
+
+        // The restraints' own states (a lumpedMassLine's nodes)
+        const dictionary* rs = stateDict.findDict("restraintStates");
+        forAll(restraints_, ri)
+        {
+            const word& name = restraints_[ri].name();
+            if (rs && rs->found(name))
+            {
+                restraints_[ri].readState(rs->subDict(name));
+            }
+        }
     }
 
     deltaT_ = state_.deltaT();
@@ -454,6 +465,21 @@ Foam::RBD::rigidBodyMotion::workspace()
 
 void Foam::RBD::rigidBodyMotion::newTime()
 {
+    // The restraints with states of their own start their step here
+    bool stateful = false;
+    forAll(restraints_, ri)
+    {
+        stateful = stateful || restraints_[ri].stateful();
+    }
+    if (stateful)
+    {
+        const rigidBodyModelWorkspace& ws = workspace();
+        forAll(restraints_, ri)
+        {
+            restraints_[ri].newTime(state_, ws);
+        }
+    }
+
     state0_ = state_;
     nSolves_ = 0;
     qDdot0Provisional_ = false;
@@ -585,4 +611,30 @@ void Foam::RBD::rigidBodyMotion::write(Ostream& os) const
     coupling_->write(os);
     os.writeEntry("nIter", nIter_);
     state_.write(os);
+    writeRestraintStates(os);
+}
+
+
+void Foam::RBD::rigidBodyMotion::writeRestraintStates(Ostream& os) const
+{
+    bool any = false;
+    forAll(restraints_, ri)
+    {
+        OStringStream entries;
+        if (restraints_[ri].writeState(entries))
+        {
+            if (!any)
+            {
+                os.beginBlock("restraintStates");
+                any = true;
+            }
+            os.beginBlock(restraints_[ri].name());
+            os.writeQuoted(entries.str(), false);
+            os.endBlock();
+        }
+    }
+    if (any)
+    {
+        os.endBlock();
+    }
 }

@@ -7,8 +7,7 @@
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
 #include "unitConversion.H"
-#include "OFstream.H"
-#include "OSspecific.H"
+#include "vtkPolyline.H"
 #include "Switch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -181,23 +180,7 @@ Foam::vector Foam::RBD::restraints::catenaryLine::force() const
 
 Foam::tensor Foam::RBD::restraints::catenaryLine::forceGradient() const
 {
-    const scalar delta = 1e-3;
-    tensor G(Zero);
-    for (direction k = 0; k < 3; ++k)
-    {
-        vector dp(Zero);
-        dp[k] = delta;
-        elasticCatenary c(line_);
-        vector across(across_);
-        const vector Fb(solve(c, fairlead_ + dp, across));
-        const vector Fa(solve(c, fairlead_ - dp, across));
-        const vector dF((Fb - Fa)/(2*delta));
-        for (direction i = 0; i < 3; ++i)
-        {
-            G[3*i + k] = dF[i];
-        }
-    }
-    return G;
+    return line_.fairleadForceGradient(anchor_, fairlead_, up_);
 }
 
 
@@ -234,34 +217,23 @@ void Foam::RBD::restraints::catenaryLine::writeOutput
     {
         return;
     }
-    mkDir(dir);
-    OFstream os(dir/name_ + ".vtk");
-    os.precision(IOstream::defaultPrecision());
     const label n = nShapePoints_;
     const scalar L = line_.props().L;
-
-    os  << "# vtk DataFile Version 2.0" << nl
-        << "catenaryLine " << name_ << " at t = " << t << nl
-        << "ASCII" << nl
-        << "DATASET POLYDATA" << nl
-        << "POINTS " << n << " double" << nl;
+    vectorField points(n);
+    scalarField tension(n);
     for (label i = 0; i < n; ++i)
     {
-        const vector p(shapePoint(L*i/(n - 1)));
-        os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
+        points[i] = shapePoint(L*i/(n - 1));
+        tension[i] = line_.shape(L*i/(n - 1)).T;
     }
-    os  << "LINES 1 " << n + 1 << nl << n;
-    for (label i = 0; i < n; ++i)
-    {
-        os  << ' ' << i;
-    }
-    os  << nl << "POINT_DATA " << n << nl
-        << "SCALARS tension double 1" << nl
-        << "LOOKUP_TABLE default" << nl;
-    for (label i = 0; i < n; ++i)
-    {
-        os  << line_.shape(L*i/(n - 1)).T << nl;
-    }
+    writeVtkPolyline
+    (
+        dir/name_ + ".vtk",
+        "catenaryLine " + name_ + " at t = " + Foam::name(t),
+        points,
+        "tension",
+        tension
+    );
 }
 
 

@@ -412,4 +412,55 @@ void Foam::RBD::elasticCatenary::stiffness(scalar K[4]) const
 }
 
 
+Foam::vector Foam::RBD::elasticCatenary::fairleadForce
+(
+    const vector& anchor,
+    const vector& fairlead,
+    const vector& up
+)
+{
+    const vector r(fairlead - anchor);
+    const scalar h = r & up;
+    const vector horizontal(r - h*up);
+    const scalar l = mag(horizontal);
+    if (!solve(l, h))
+    {
+        return Zero;
+    }
+    return
+        -H_*(l > VSMALL ? horizontal/l : vector::zero)
+      - V_*up;
+}
+
+
+Foam::tensor Foam::RBD::elasticCatenary::fairleadForceGradient
+(
+    const vector& anchor,
+    const vector& fairlead,
+    const vector& up
+) const
+{
+    const scalar delta = 1e-3;
+    tensor G(Zero);
+    elasticCatenary c(*this);
+    for (direction k = 0; k < 3; ++k)
+    {
+        vector dp(Zero);
+        dp[k] = delta;
+        const vector dF
+        (
+            (
+                c.fairleadForce(anchor, fairlead + dp, up)
+              - c.fairleadForce(anchor, fairlead - dp, up)
+            )/(2*delta)
+        );
+        for (direction i = 0; i < 3; ++i)
+        {
+            G[3*i + k] = dF[i];
+        }
+    }
+    return G;
+}
+
+
 // ************************************************************************* //

@@ -1,0 +1,313 @@
+/*---------------------------------------------------------------------------*\
+    lumpedMassLine: a dynamic mooring line (lumpedMassLine.H)
+\*---------------------------------------------------------------------------*/
+
+#include "lumpedMassLine.H"
+#include "rigidBodyModel.H"
+#include "rigidBodyEntries.H"
+#include "vtkPolyline.H"
+#include "addToRunTimeSelectionTable.H"
+#include "Switch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace restraints
+{
+    defineTypeNameAndDebug(lumpedMassLine, 0);
+
+    addToRunTimeSelectionTable
+    (
+        restraint,
+        lumpedMassLine,
+        dictionary
+    );
+}
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::RBD::restraints::lumpedMassLine::fairlead
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    const vector& g = model_.g();
+    const vector up(mag(g) > VSMALL ? -g/mag(g) : vector(0, 0, 1));
+    if (props_.hasSeabed && (p & up) < props_.seabed - 1e-6*props_.L)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "lumpedMassLine " << name_ << ": the fairlead (refAttachmentPt "
+            << refAttachmentPt_ << ", at " << p << ") is below the seabed "
+            << props_.seabed << nl << exit(FatalIOError);
+    }
+    return p;
+}
+
+
+Foam::RBD::lumpedLine& Foam::RBD::restraints::lumpedMassLine::line
+(
+    const scalar t,
+    const vector& p
+) const
+{
+    if (!line_)
+    {
+        lumpedLine::properties lp(props_);
+        lp.g = model_.g();
+        line_.reset(new lumpedLine(lp, anchor_, p, t));
+        if (pendingState_.size())
+        {
+            line_->readState(pendingState_);
+        }
+    }
+    return *line_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
+(
+    const word& name,
+    const dictionary& dict,
+    const rigidBodyModel& model
+)
+:
+    restraint(name, dict, model),
+    anchor_(Zero),
+    refAttachmentPt_(Zero),
+    props_(),
+    writeShape_(true)
+{
+    read(dict);
+}
+
+
+Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
+(
+    const lumpedMassLine& l
+)
+:
+    restraint(l),
+    anchor_(l.anchor_),
+    refAttachmentPt_(l.refAttachmentPt_),
+    props_(l.props_),
+    writeShape_(l.writeShape_),
+    line_(l.line_ ? new lumpedLine(*l.line_) : nullptr),
+    pendingState_(l.pendingState_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::restraints::lumpedMassLine::restrain
+(
+    scalarField&,
+    Field<spatialVector>& fx,
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const vector p(fairlead(ws));
+    lumpedLine& l = line(state.t(), p);
+    l.advance(state.t(), p);
+    addForce(fx, p, l.force());
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::newTime
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    const vector p(fairlead(ws));
+    lumpedLine& l = line(state.t(), p);
+    l.advance(state.t(), p);
+    l.commit();
+}
+
+
+bool Foam::RBD::restraints::lumpedMassLine::writeState(Ostream& os) const
+{
+    if (!line_)
+    {
+        return false;
+    }
+    line_->writeState(os);
+    return true;
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::readState(const dictionary& dict)
+{
+    if (line_)
+    {
+        line_->readState(dict);
+    }
+    else
+    {
+        pendingState_ = dict;
+    }
+}
+
+
+Foam::wordList Foam::RBD::restraints::lumpedMassLine::tableColumns() const
+{
+    return wordList{name_ + ".tension", name_ + ".anchorTension"};
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::tableValues
+(
+    scalarField& row,
+    label& k
+) const
+{
+    row[k++] = line_ ? line_->tension(props_.N - 1) : 0;
+    row[k++] = line_ ? line_->tension(0) : 0;
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::writeOutput
+(
+    const fileName& dir,
+    const scalar t
+) const
+{
+    if (!writeShape_ || !line_)
+    {
+        return;
+    }
+    // At each node the mean of its segments' tensions
+    const label N = props_.N;
+    scalarField T(N + 1, Zero);
+    for (label j = 0; j < N; ++j)
+    {
+        const scalar Tj = line_->tension(j);
+        T[j] += (j == 0 ? 1 : 0.5)*Tj;
+        T[j + 1] += (j == N - 1 ? 1 : 0.5)*Tj;
+    }
+    writeVtkPolyline
+    (
+        dir/name_ + ".vtk",
+        "lumpedMassLine " + name_ + " at t = " + Foam::name(t),
+        line_->x(),
+        "tension",
+        T
+    );
+}
+
+
+bool Foam::RBD::restraints::lumpedMassLine::read(const dictionary& dict)
+{
+    restraint::read(dict);
+
+    anchor_ = dict.get<vector>("anchor");
+    refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
+
+    lumpedLine::properties& p = props_;
+    p.L = readPositive(dict, "length");
+    p.N = dict.get<label>("nSegments");
+    if (p.N < 1)
+    {
+        FatalIOErrorInFunction(dict.lookup("nSegments"))
+            << "Entry nSegments " << p.N << " in " << dict.dictName()
+            << " must be 1 or more" << nl << exit(FatalIOError);
+    }
+    p.mu = readPositive(dict, "massPerLength");
+    p.d = readPositive(dict, "diameter");
+    p.EA = readPositive(dict, "EA");
+    p.rho = readNonNegative(dict, "rhoWater");
+
+    auto optional = [&](const word& key, const scalar deflt)
+    {
+        return dict.found(key) ? readNonNegative(dict, key) : deflt;
+    };
+    p.Cdn = optional("Cdn", 1);
+    p.Cdt = optional("Cdt", 0);
+    p.Can = optional("Can", 1);
+    p.Cat = optional("Cat", 0);
+
+    if (dict.found("dampingRatio") && dict.found("BA"))
+    {
+        FatalIOErrorInFunction(dict.lookup("BA"))
+            << "Entries dampingRatio and BA in " << dict.dictName()
+            << " both give the line's internal damping: give one" << nl
+            << exit(FatalIOError);
+    }
+    p.BA =
+        dict.found("BA")
+      ? readNonNegative(dict, "BA")
+      : optional("dampingRatio", 0)*2*(p.L/p.N)*sqrt(p.EA*p.mu);
+
+    p.g = model_.g();
+    const vector up
+    (
+        mag(p.g) > VSMALL ? -p.g/mag(p.g) : vector(0, 0, 1)
+    );
+    p.hasSeabed = dict.readIfPresent("seabed", p.seabed);
+    if (p.hasSeabed)
+    {
+        if (!std::isfinite(p.seabed))
+        {
+            FatalIOErrorInFunction(dict.lookup("seabed"))
+                << "Entry seabed " << p.seabed << " in " << dict.dictName()
+                << " must be a finite height" << nl << exit(FatalIOError);
+        }
+        if ((anchor_ & up) < p.seabed - 1e-6*p.L)
+        {
+            FatalIOErrorInFunction(dict.lookup("anchor"))
+                << "Entry anchor " << anchor_ << " in " << dict.dictName()
+                << " is below the seabed " << p.seabed << ": put it on the"
+                << " seabed or above it" << nl << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        p.seabed = 0;
+    }
+    p.kSeabed = optional("seabedStiffness", 3e6);
+    p.cSeabed = optional("seabedDamping", 3e5);
+
+    writeShape_ = dict.getOrDefault<Switch>("writeShape", true);
+
+    return true;
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::write(Ostream& os) const
+{
+    restraint::write(os);
+    const lumpedLine::properties& p = props_;
+    os.writeEntry("anchor", anchor_);
+    os.writeEntry("refAttachmentPt", refAttachmentPt_);
+    os.writeEntry("length", p.L);
+    os.writeEntry("nSegments", p.N);
+    os.writeEntry("massPerLength", p.mu);
+    os.writeEntry("diameter", p.d);
+    os.writeEntry("EA", p.EA);
+    os.writeEntry("BA", p.BA);
+    os.writeEntry("Cdn", p.Cdn);
+    os.writeEntry("Cdt", p.Cdt);
+    os.writeEntry("Can", p.Can);
+    os.writeEntry("Cat", p.Cat);
+    os.writeEntry("rhoWater", p.rho);
+    if (p.hasSeabed)
+    {
+        os.writeEntry("seabed", p.seabed);
+        os.writeEntry("seabedStiffness", p.kSeabed);
+        os.writeEntry("seabedDamping", p.cSeabed);
+    }
+    os.writeEntry("writeShape", Switch(writeShape_));
+}
+
+
+// ************************************************************************* //
