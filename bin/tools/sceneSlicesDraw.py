@@ -7,7 +7,10 @@ patch's faces on the mesh of that time) that OpenFOAM's surfaces function
 object wrote in legacy ascii VTK, cuts the patch faces with the same plane
 into the body's outline, and draws a PNG per time with gnuplot: the cells
 filled by the field's value, their edges thin, the outline thick, and the
-centre of rotation from the body's table as a cross.  Prints, per time and
+centre of rotation from the body's table as a cross, and the mooring
+lines the motion wrote at that time (TABLEDIR/<time>/<line>.vtk, VTK
+polylines: catenaryLine, lumpedMassLine) projected on the plane.  Prints,
+per time and
 body, the table's centre and the outline's extent in the plane, for a check
 by eye or by script.  Standard library only (Debian's /usr/bin/python3).
 
@@ -160,6 +163,16 @@ def cutFaces(points, polys, p0, n):
 # ---------------------------------------------------------------------------
 # A body's table: the row nearest a time, found by the header's names
 
+def readPolyline(path):
+    """The points of a legacy ascii VTK polyline (a mooring line's
+    shape), in order."""
+    words = open(path).read().split()
+    i = words.index("POINTS")
+    n = int(words[i + 1])
+    x = [float(w) for w in words[i + 3:i + 3 + 3*n]]
+    return [tuple(x[3*k:3*k + 3]) for k in range(n)]
+
+
 def readTable(tableDir, body):
     rows = []
     cofr, orient = 1, 4
@@ -250,7 +263,10 @@ def main(argv):
             bp, bf, _ = readVtk(f)
             outlines[name] = [(toPlane(a), toPlane(b))
                               for a, b in cutFaces(bp, bf, p0, n)]
-        scenes.append((t, cells, outlines))
+        lines = [[toPlane(p) for p in readPolyline(f)]
+                 for f in sorted(glob.glob(os.path.join(tableDir, t,
+                                                        "*.vtk")))]
+        scenes.append((t, cells, outlines, lines))
 
     # The window: the outlines of all times, and the margin about them,
     # within the cut's extent; the same for every time
@@ -259,7 +275,7 @@ def main(argv):
         sys.exit("sceneSlices: the plane cuts no cell")
     du = (min(p[0] for p in allCells), max(p[0] for p in allCells))
     dv = (min(p[1] for p in allCells), max(p[1] for p in allCells))
-    ends = [p for _, _, outl in scenes for segs in outl.values()
+    ends = [p for _, _, outl, _ in scenes for segs in outl.values()
             for s in segs for p in s]
     if ends:
         wu = [min(p[0] for p in ends) - margin,
@@ -288,7 +304,7 @@ def main(argv):
     width = 1000
     height = int(min(max(800*aspect + 190, 420), 1400))
 
-    for t, cells, outlines in scenes:
+    for t, cells, outlines, lines in scenes:
         tv = float(t)
         titleBodies, centres = [], []
         for name in tables:
@@ -341,6 +357,12 @@ def main(argv):
             for a, b in segs:
                 out.append("%.7g %.7g\n%.7g %.7g\n" % (a + b))
         out.append("EOD")
+        out.append("$mooring << EOD")
+        for line in lines:
+            for p in line:
+                out.append("%.7g %.7g" % p)
+            out.append("")
+        out.append("EOD")
         out.append("$centres << EOD")
         for c in centres:
             out.append("%.7g %.7g" % c)
@@ -379,6 +401,9 @@ set tics out
         if any(outlines.values()):
             plots.append("$outline using 1:2 with lines lc rgb 'black' lw 3"
                          " title 'body patch cut by the plane'")
+        if lines:
+            plots.append("$mooring using 1:2 with lines lc rgb '#8b4513'"
+                         " lw 2 title 'mooring lines (projected)'")
         if centres:
             plots.append("$centres using 1:2 with points pt 1 ps 3 lw 2"
                          " lc rgb '#d00000'"
