@@ -21,8 +21,14 @@ Description
       seabed, residual under 1e-8 of the fairlead tension; and the stretch
       |dr/ds| = 1 + T/EA within 1e-9 (derivatives by 4th-order
       differences, over a step under the radius of curvature);
+    - a line slack along the seabed, hanging straight down to the fairlead,
+      has no horizontal tension and V the weight of its hanging length;
     - Newton from the previous answer takes at most 4 iterations after a
       10 cm move of the fairlead;
+    - the dynamic line (lumpedLine): its first axial period, its energy
+      without damping or drag, its fairlead force at the start and under a
+      slow motion against the catenary's, Lowe and Langley's line settled,
+      and a heavily damped line stable;
     - the table's columns (tension, groundedLength, fairleadAngle).
     Tolerances are stated with each check.
 
@@ -304,6 +310,21 @@ void states()
     checkShape("OC3 line, vertical and taut", RBD::elasticCatenary(oc3), 0,
         905);
 
+    checkShape("OC3 line, slack along the seabed, hanging straight down to"
+        " the fairlead", RBD::elasticCatenary(oc3), 500, 250);
+    {
+        // No catenary with H > 0 exists: H = 0, and V the weight of the
+        // hanging length s, h = s (1 + w s/(2 EA))
+        RBD::elasticCatenary c(oc3);
+        c.solve(500, 250);
+        const scalar w = oc3.w, EA = oc3.EA;
+        const scalar sh = (sqrt(1 + 2*w*250/EA) - 1)*EA/w;
+        check(c.H() == 0, "OC3 line slack along the seabed: no horizontal"
+            " tension");
+        checkRel(c.V(), w*sh, 1e-12, "OC3 line slack along the seabed: V"
+            " the weight of its hanging length, 1e-12");
+    }
+
     RBD::elasticCatenary::properties clear(oc3);
     clear.grounded = false;
     checkShape("OC3 line from an anchor above the seabed, hanging below it",
@@ -459,6 +480,13 @@ void quasiStatic()
     RBD::elasticCatenary::properties cp{902.2, 698.094, 384.243e6, 0, true};
     RBD::elasticCatenary c(cp);
 
+    // It starts settled: its own equilibrium, near the catenary's
+    c.solve(f0.x() - anchor.x(), f0.z() - anchor.z());
+    checkAbs(mag(line.force() - vector(-c.H(), 0, -c.V()))/c.tension(), 0,
+        1e-2, "lumpedLine starts in its own equilibrium: the fairlead force"
+        " against the catenary's, 1% (in "
+      + std::to_string(line.settledIn()) + " sub-steps of settling)");
+
     const scalar dt = 0.05;
     scalar worst = 0;
     for (label n = 1; n <= 2400; ++n)
@@ -502,6 +530,22 @@ void loweLangleyDynamic()
         line.commit();
     }
     const vector F(line.force());
+
+    // Heavily damped (ratio 5): the sub-step shrinks to stay stable
+    {
+        RBD::lumpedLine::properties p5(p);
+        p5.BA = dampingBA(p5, 5);
+        RBD::lumpedLine l5(p5, anchor, fairlead, 0);
+        for (label n = 1; n <= 100; ++n)
+        {
+            l5.advance(0.1*n, fairlead + vector(0.5*sin(0.5*n*0.1), 0, 0));
+            l5.commit();
+        }
+        checkAbs(mag(l5.force() - F), 0, 2e3, "lumpedLine heavily damped"
+            " (ratio 5) through 10 s of motion: stable, within 2 kN of the"
+            " settled force");
+    }
+
     checkAbs(F.x(), -11400, 200, "lumpedLine, Lowe and Langley's line"
         " settled: force on the fairlead x (-11.40 kN), 0.2 kN");
     checkAbs(F.z(), -45710, 200, "lumpedLine, Lowe and Langley's line"

@@ -121,20 +121,30 @@ bool Foam::RBD::elasticCatenary::newton
         scalar dH = -(J[3]*fx - J[1]*fz)/det;
         scalar dV = -(J[0]*fz - J[2]*fx)/det;
 
-        // Keep H positive: at most a tenth of it left
+        // Keep H positive, and V too where the line may rest on the
+        // seabed (the grounded form has a second root with V < 0, a line
+        // longer than itself on the seabed): at most a tenth of either left
+        scalar alpha = 1;
         if (H + dH <= 0)
         {
-            const scalar alpha = 0.9*H/(-dH);
-            dH *= alpha;
-            dV *= alpha;
+            alpha = 0.9*H/(-dH);
         }
+        if (p_.grounded && V > 0 && V + alpha*dV <= 0)
+        {
+            alpha = 0.9*V/(-dV);
+        }
+        dH *= alpha;
+        dV *= alpha;
 
         H += dH;
         V += dV;
 
         if (mag(dH) + mag(dV) <= 1e-15*(H + mag(V)))
         {
-            return true;
+            // Stalled: an answer only if the residual is small too
+            scalar x1, z1, J1[4];
+            position(H, V, x1, z1, J1);
+            return mag(x1 - l) + mag(z1 - h) <= 1e3*tol;
         }
     }
 
@@ -179,6 +189,22 @@ bool Foam::RBD::elasticCatenary::solve(const scalar l, const scalar h)
         return true;
     }
 
+    if (p_.grounded && h >= 0)
+    {
+        // So slack that the line lies along the seabed from the anchor and
+        // hangs straight down to the fairlead, with line to spare: its
+        // hanging length s is h = s (1 + w s/(2 EA)), the rest is on the
+        // seabed, and it pulls only down (no catenary with H > 0 exists)
+        const scalar s = (sqrt(1 + 2*w*h/EA) - 1)*EA/w;
+        if (l + s <= L)
+        {
+            H_ = 0;
+            V_ = w*s;
+            started_ = false;
+            return true;
+        }
+    }
+
     if (l <= 1e-9*L)
     {
         // Vertical: no horizontal tension
@@ -190,9 +216,8 @@ bool Foam::RBD::elasticCatenary::solve(const scalar l, const scalar h)
         }
         else if (p_.grounded)
         {
-            // Hanging from the fairlead down to the seabed: h = s (1 +
-            // w s/(2 EA)) for its hanging length s
-            V_ = h > 0 ? (sqrt(1 + 2*w*h/EA) - 1)*EA : 0;
+            // Below the anchor's height: resting
+            V_ = 0;
         }
         else
         {
@@ -298,12 +323,11 @@ Foam::RBD::elasticCatenary::point Foam::RBD::elasticCatenary::shape
     if (w <= 0)
     {
         // Straight
-        const scalar d = sqrt(sqr(l_) + sqr(h_));
-        const scalar T = tension();
-        const scalar f = (s*(1 + T/EA))/max(d, VSMALL);
-        pt.x = T > 0 ? s/L*l_ : f*l_;
-        pt.z = T > 0 ? s/L*h_ : f*h_;
-        pt.T = T;
+        // Straight from the anchor to the fairlead (a slack one drawn so
+        // too)
+        pt.x = s/L*l_;
+        pt.z = s/L*h_;
+        pt.T = tension();
         return pt;
     }
 
@@ -311,11 +335,13 @@ Foam::RBD::elasticCatenary::point Foam::RBD::elasticCatenary::shape
 
     if (H == 0)
     {
-        // Vertical
+        // No horizontal tension: vertical, or slack along the seabed
         pt.x = 0;
         if (LB > 0)
         {
-            // Piled on the seabed at the anchor, then hanging
+            // Along the seabed to under the fairlead (the spare line
+            // spread evenly), then hanging
+            pt.x = l_*min(s, LB)/LB;
             const scalar sigma = max(s - LB, scalar(0));
             pt.z = sigma + w*sqr(sigma)/(2*EA);
             pt.T = w*sigma;
@@ -440,7 +466,7 @@ Foam::tensor Foam::RBD::elasticCatenary::fairleadForceGradient
     const vector& up
 ) const
 {
-    const scalar delta = 1e-3;
+    const scalar delta = 1e-6*max(p_.L, scalar(1));
     tensor G(Zero);
     elasticCatenary c(*this);
     for (direction k = 0; k < 3; ++k)

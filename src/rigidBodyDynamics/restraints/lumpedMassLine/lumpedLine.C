@@ -139,6 +139,98 @@ void Foam::RBD::lumpedLine::derivatives
 }
 
 
+void Foam::RBD::lumpedLine::subStep
+(
+    const scalar h,
+    const vector& xf,
+    const vector& vf
+)
+{
+    const label N = p_.N;
+
+    xs_ = x_;
+    vs_ = v_;
+    derivatives(xs_, vs_, xf, vf, ax_, av_);
+    kx_ = ax_;
+    kv_ = av_;
+
+    for (const scalar c : {0.5, 0.5, 1.0})
+    {
+        for (label i = 1; i < N; ++i)
+        {
+            xs_[i] = x_[i] + c*h*ax_[i];
+            vs_[i] = v_[i] + c*h*av_[i];
+        }
+        derivatives(xs_, vs_, xf + c*h*vf, vf, ax_, av_);
+        const scalar wgt = c < 1 ? 2 : 1;
+        for (label i = 1; i < N; ++i)
+        {
+            kx_[i] += wgt*ax_[i];
+            kv_[i] += wgt*av_[i];
+        }
+    }
+
+    for (label i = 1; i < N; ++i)
+    {
+        x_[i] += h/6*kx_[i];
+        v_[i] += h/6*kv_[i];
+    }
+}
+
+
+Foam::label Foam::RBD::lumpedLine::settle()
+{
+    // Kinetic damping: integrate with the ends held, and stop every node
+    // whenever the kinetic energy has passed a peak, until the nodes' net
+    // forces are under 1e-6 of the largest segment tension (or the
+    // weight of a segment)
+    const label N = p_.N;
+    const scalar h = maxSubStep();
+    const vector xf(x_[N]);
+    const scalar weight = mag((p_.mu - p_.rho*A_)*p_.g)*l0_;
+
+    scalar KE0 = 0;
+    label n = 0;
+    for (; n < 1000000; ++n)
+    {
+        if (n % 50 == 0)
+        {
+            forces(x_, v_, f_);
+            scalar Tmax = weight;
+            for (label j = 0; j < N; ++j)
+            {
+                Tmax = max(Tmax, tension(j));
+            }
+            scalar fmax = 0;
+            for (label i = 1; i < N; ++i)
+            {
+                fmax = max(fmax, mag(f_[i]));
+            }
+            if (fmax <= 1e-6*Tmax)
+            {
+                break;
+            }
+        }
+
+        subStep(h, xf, Zero);
+
+        scalar KE = 0;
+        for (label i = 1; i < N; ++i)
+        {
+            KE += 0.5*(inertia(x_, i, v_[i]) & v_[i]);
+        }
+        if (KE < KE0)
+        {
+            v_ = Zero;
+            KE = 0;
+        }
+        KE0 = KE;
+    }
+    v_ = Zero;
+    return n;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::lumpedLine::lumpedLine
@@ -168,7 +260,8 @@ Foam::RBD::lumpedLine::lumpedLine
     kx_(p.N + 1),
     kv_(p.N + 1),
     f_(p.N + 1),
-    nSub_(0)
+    nSub_(0),
+    settled_(0)
 {
     // The initial shape: the quasi-static catenary (straight for a line
     // lighter than water)
@@ -203,6 +296,13 @@ Foam::RBD::lumpedLine::lumpedLine
     x0_[p.N] = fairlead;
     x_ = x0_;
 
+    // Nodes on the catenary make chords shorter than its arcs, so the
+    // segments start short of their stretch: settle them to the lumped
+    // line's own equilibrium
+    settled_ = settle();
+    x0_ = x_;
+    v0_ = Zero;
+
     forces(x_, v_, f_);
     force_ = f_[p.N];
 }
@@ -212,7 +312,29 @@ Foam::RBD::lumpedLine::lumpedLine
 
 Foam::scalar Foam::RBD::lumpedLine::maxSubStep() const
 {
-    return 0.2*l0_/sqrt(p_.EA/p_.mu);
+    // 0.2 of a segment's axial transit time; and within RK4's stability
+    // for the fastest damped mode (the internal damping's, 4 BA/(l0^2 mu):
+    // RK4 is stable to 2.79 on the negative real axis) and the seabed's
+    // spring and damper on a node
+    scalar h = 0.2*l0_/sqrt(p_.EA/p_.mu);
+    if (p_.BA > 0)
+    {
+        h = min(h, 0.5*sqr(l0_)*p_.mu/p_.BA);
+    }
+    if (p_.hasSeabed)
+    {
+        const scalar k = p_.kSeabed*p_.d/p_.mu;
+        const scalar c = p_.cSeabed*p_.d/p_.mu;
+        if (k > 0)
+        {
+            h = min(h, 0.5/sqrt(k));
+        }
+        if (c > 0)
+        {
+            h = min(h, 0.5/c);
+        }
+    }
+    return h;
 }
 
 
@@ -243,35 +365,7 @@ void Foam::RBD::lumpedLine::advance(const scalar t, const vector& fairlead)
 
     for (label n = 0; n < nSub_; ++n)
     {
-        const scalar tau = n*h;
-
-        xs_ = x_;
-        vs_ = v_;
-        derivatives(xs_, vs_, xf0 + tau*vf, vf, ax_, av_);
-        kx_ = ax_;
-        kv_ = av_;
-
-        for (const scalar c : {0.5, 0.5, 1.0})
-        {
-            for (label i = 1; i < N; ++i)
-            {
-                xs_[i] = x_[i] + c*h*ax_[i];
-                vs_[i] = v_[i] + c*h*av_[i];
-            }
-            derivatives(xs_, vs_, xf0 + (tau + c*h)*vf, vf, ax_, av_);
-            const scalar wgt = c < 1 ? 2 : 1;
-            for (label i = 1; i < N; ++i)
-            {
-                kx_[i] += wgt*ax_[i];
-                kv_[i] += wgt*av_[i];
-            }
-        }
-
-        for (label i = 1; i < N; ++i)
-        {
-            x_[i] += h/6*kx_[i];
-            v_[i] += h/6*kv_[i];
-        }
+        subStep(h, xf0 + n*h*vf, vf);
     }
 
     x_[N] = fairlead;
