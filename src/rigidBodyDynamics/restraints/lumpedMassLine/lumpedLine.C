@@ -238,7 +238,8 @@ Foam::RBD::lumpedLine::lumpedLine
     const properties& p,
     const vector& anchor,
     const vector& fairlead,
-    const scalar t
+    const scalar t,
+    const vector& fairleadVelocity
 )
 :
     p_(p),
@@ -302,6 +303,8 @@ Foam::RBD::lumpedLine::lumpedLine
     settled_ = settle();
     x0_ = x_;
     v0_ = Zero;
+    v0_[p.N] = fairleadVelocity;
+    v_ = v0_;
 
     forces(x_, v_, f_);
     force_ = f_[p.N];

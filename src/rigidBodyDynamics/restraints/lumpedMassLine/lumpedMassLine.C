@@ -54,14 +54,22 @@ Foam::vector Foam::RBD::restraints::lumpedMassLine::fairlead
 Foam::RBD::lumpedLine& Foam::RBD::restraints::lumpedMassLine::line
 (
     const scalar t,
-    const vector& p
+    const vector& p,
+    const rigidBodyModelWorkspace& ws
 ) const
 {
     if (!line_)
     {
         lumpedLine::properties lp(props_);
         lp.g = model_.g();
-        line_.reset(new lumpedLine(lp, anchor_, p, t));
+        line_.reset
+        (
+            new lumpedLine
+            (
+                lp, anchor_, p, t,
+                model_.v(bodyID_, refAttachmentPt_, ws).l()
+            )
+        );
         if (pendingState_.size())
         {
             line_->readState(pendingState_);
@@ -116,7 +124,7 @@ void Foam::RBD::restraints::lumpedMassLine::restrain
 ) const
 {
     const vector p(fairlead(ws));
-    lumpedLine& l = line(state.t(), p);
+    lumpedLine& l = line(state.t(), p, ws);
     l.advance(state.t(), p);
     addForce(fx, p, l.force());
 }
@@ -129,7 +137,7 @@ void Foam::RBD::restraints::lumpedMassLine::newTime
 )
 {
     const vector p(fairlead(ws));
-    lumpedLine& l = line(state.t(), p);
+    lumpedLine& l = line(state.t(), p, ws);
     l.advance(state.t(), p);
     l.commit();
 }
