@@ -84,6 +84,24 @@ void Foam::RBD::lumpedLine::forces
 }
 
 
+void Foam::RBD::lumpedLine::massTerms
+(
+    const vectorField& x,
+    const label i,
+    scalar& alpha,
+    scalar& beta,
+    vector& q
+) const
+{
+    // Node i's mass and added mass: alpha I + beta q q^T, alpha = m +
+    // rho V Can, beta = rho V (Cat - Can), q the line's direction there
+    const scalar s = share(i);
+    alpha = p_.mu*s + p_.rho*A_*s*p_.Can;
+    beta = p_.rho*A_*s*(p_.Cat - p_.Can);
+    q = direction(x, i);
+}
+
+
 Foam::vector Foam::RBD::lumpedLine::accelerate
 (
     const vectorField& x,
@@ -91,12 +109,10 @@ Foam::vector Foam::RBD::lumpedLine::accelerate
     const vector& F
 ) const
 {
-    // (alpha I + beta q q^T)^-1 F, alpha = m + rho V Can,
-    // beta = rho V (Cat - Can)
-    const scalar s = share(i);
-    const scalar alpha = p_.mu*s + p_.rho*A_*s*p_.Can;
-    const scalar beta = p_.rho*A_*s*(p_.Cat - p_.Can);
-    const vector q(direction(x, i));
+    // (alpha I + beta q q^T)^-1 F
+    scalar alpha, beta;
+    vector q;
+    massTerms(x, i, alpha, beta, q);
     return (F - beta/(alpha + beta)*(q & F)*q)/alpha;
 }
 
@@ -108,10 +124,9 @@ Foam::vector Foam::RBD::lumpedLine::inertia
     const vector& a
 ) const
 {
-    const scalar s = share(i);
-    const scalar alpha = p_.mu*s + p_.rho*A_*s*p_.Can;
-    const scalar beta = p_.rho*A_*s*(p_.Cat - p_.Can);
-    const vector q(direction(x, i));
+    scalar alpha, beta;
+    vector q;
+    massTerms(x, i, alpha, beta, q);
     return alpha*a + beta*(q & a)*q;
 }
 
