@@ -128,7 +128,7 @@ def seedCases(root):
                   os.path.join(c, "rigidBodyMotionDict")}, 0.1, 0.001)
 
     # The mooring lines: a buoy on a dynamic and a quasi-static line
-    c = os.path.join(TOP, "test", "cases", "mooredBuoy", "constant")
+    c = os.path.join(TOP, "test", "mooring", "mooredBuoy", "constant")
     add("mooredBuoy", {"constant/rigidBodyMotionDict":
                        os.path.join(c, "rigidBodyMotionDict")}, 0.1, 0.01)
 
