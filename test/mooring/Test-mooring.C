@@ -436,7 +436,7 @@ void axialMode()
         const scalar t = n*dt;
         line.advance(t, fairlead);
         line.commit();
-        const scalar u = line.x()[N/2].x() - xMid;
+        const scalar u = line.nodes()[N/2].x() - xMid;
         if (n > 1 && (u < 0) != (prev < 0))
         {
             crossings.append(tPrev - prev*(t - tPrev)/(u - prev));
@@ -553,7 +553,7 @@ void loweLangleyDynamic()
 
     // On the anchor: the first segment's pull and the anchor node's share
     // of the weight in water
-    const vectorField& x = line.x();
+    const vectorField& x = line.nodes();
     const vector t0((x[1] - x[0])/mag(x[1] - x[0]));
     const scalar A = 0.25*constant::mathematical::pi*sqr(p.d);
     const vector FA

@@ -207,7 +207,7 @@ void Foam::RBD::restraints::lumpedMassLine::writeOutput
     (
         dir/name_ + ".vtk",
         "lumpedMassLine " + name_ + " at t = " + Foam::name(t),
-        line_->x(),
+        line_->nodes(),
         "tension",
         T
     );
