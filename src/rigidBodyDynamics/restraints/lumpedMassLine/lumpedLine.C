@@ -331,9 +331,10 @@ Foam::RBD::lumpedLine::lumpedLine
 Foam::scalar Foam::RBD::lumpedLine::maxSubStep() const
 {
     // 0.2 of a segment's axial transit time; and within RK4's stability
-    // for the fastest damped mode (the internal damping's, 4 BA/(l0^2 mu):
-    // RK4 is stable to 2.79 on the negative real axis) and the seabed's
-    // spring and damper on a node
+    // (to 2.79 on the negative real axis, 2.83 on the imaginary one) with
+    // a margin: the internal damping's fastest mode, 4 BA/(l0^2 mu), to
+    // 2.0; the seabed's spring on a node, sqrt(kSeabed d/mu), and its
+    // damper, cSeabed d/mu, to 2.0
     scalar h = 0.2*l0_/sqrt(p_.EA/p_.mu);
     if (p_.BA > 0)
     {
@@ -345,11 +346,11 @@ Foam::scalar Foam::RBD::lumpedLine::maxSubStep() const
         const scalar c = p_.cSeabed*p_.d/p_.mu;
         if (k > 0)
         {
-            h = min(h, 0.5/sqrt(k));
+            h = min(h, 2/sqrt(k));
         }
         if (c > 0)
         {
-            h = min(h, 0.5/c);
+            h = min(h, 2/c);
         }
     }
     return h;
