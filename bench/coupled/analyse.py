@@ -1,19 +1,32 @@
 #!/usr/bin/env python3
-"""bench/coupled/run's tables and plot.
+"""bench/coupled/run's records, tables and plot.
 
+    analyse.py record box|floatingObject NAME FOLDER
+        keeps what the run in FOLDER gave, in RESULTS/<case>/<NAME>.dat:
+        its CPU time, steps, outer correctors a step and steps flagged,
+        with the date and commit, and its motion (time, then heave and
+        pitch for the box, sway and pitch for floatingObject) over the
+        bench's window.  The records are committed, so a run made once is
+        kept when the machine and its run folders are not.
     analyse.py box|floatingObject LIST PNG
+        LIST: the settings' names, one a line (bench/coupled/run).  Prints
+        a markdown table of each recorded setting's error against the
+        converged reference (n10-co0.125) and against 10 correctors at its
+        own step (the correctors' error), its CPU time, outer correctors a
+        step and steps flagged "coupling not converged"; writes PNG, the
+        error against the CPU time (gnuplot).
 
-LIST: lines "NAME FOLDER", the settings run (bench/coupled/run).  Prints a
-markdown table of each setting's error against the converged reference
-(n10-co0.125) and against 10 correctors at its own step (the correctors'
-error), its CPU time, outer correctors a step and steps flagged "coupling
-not converged"; writes PNG, the error against the CPU time (gnuplot).
-Exit status 1 where a run or the reference is missing.
+RESULTS is bench/coupled/results, or $COUPLED_RESULTS if set.  Exit status
+1 where a run or the reference is missing.
 """
 import bisect
+import datetime
 import os
 import subprocess
 import sys
+
+RESULTS = os.environ.get('COUPLED_RESULTS') or os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), 'results')
 
 
 def table(path, columns):
@@ -73,36 +86,84 @@ def halfRange(t, x, a, b):
     return (max(w) - min(w))/2 if w else None
 
 
-def boxFigures(folder):
-    """Heave and pitch amplitudes over the two windows, and the
-    continuation's log figures."""
+def boxRun(folder):
+    """A box run's motion from the 3.0 s state on (time, heave q1, pitch
+    q2), and the continuation's log figures."""
     f = os.path.join(folder, 'postProcessing', 'joined', 'rigidBodyMotion.dat')
     t, z, r = table(f, ['t', 'q1', 'q2'])
     if not t or t[-1] < 5.4 - 1e-6:
         raise ValueError('its table ends at %s s, before 5.4 s'
                          % (t[-1] if t else '-'))
-    amps = [(halfRange(t, z, a, b), halfRange(t, r, a, b))
-            for a, b in ((3.6, 4.8), (4.2, 5.4))]
+    keep = [i for i, ti in enumerate(t) if ti >= 3.0 - 1e-9]
     base = os.path.join(os.path.dirname(folder), 'base', 'log.interFoam')
     fromLine = sum(1 for _ in open(base, errors='replace'))
-    return amps, logFigures(os.path.join(folder, 'log.interFoam'), fromLine)
+    return ([[x[i] for i in keep] for x in (t, z, r)],
+            logFigures(os.path.join(folder, 'log.interFoam'), fromLine))
 
 
-def foFigures(folder):
+def foRun(folder):
+    """A floatingObject run's motion (time, sway q0, pitch q1) and its log
+    figures."""
     f = os.path.join(folder, 'postProcessing', 'rigidBodyMotion', '0',
                      'floatingObject.dat')
     t, y, r = table(f, ['t', 'q0', 'q1'])
     return (t, y, r), logFigures(os.path.join(folder, 'log.interFoam'))
 
 
-def main(case, listFile, png):
-    runs = [l.split() for l in open(listFile) if l.strip()]
+FIGURES = ('cpu', 'steps', 'outer', 'flagged')
+
+
+def record(case, name, folder):
+    """Keep a made run's figures and motion in RESULTS/<case>/<name>.dat."""
+    motion, figures = (boxRun if case == 'box' else foRun)(folder)
+    if figures[0] is None:
+        raise ValueError('its log has no ExecutionTime')
+    commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'],
+                            capture_output=True, text=True,
+                            cwd=os.path.dirname(os.path.abspath(__file__)))
+    os.makedirs(os.path.join(RESULTS, case), exist_ok=True)
+    path = os.path.join(RESULTS, case, name + '.dat')
+    cols = ('t', 'q1', 'q2') if case == 'box' else ('t', 'q0', 'q1')
+    with open(path, 'w') as f:
+        f.write('# bench/coupled/run %s: %s\n' % (case, name))
+        f.write('# made %s at commit %s\n'
+                % (datetime.datetime.now().strftime('%Y-%m-%d %H:%M'),
+                   commit.stdout.strip() or '?'))
+        for k, v in zip(FIGURES, figures):
+            f.write('# %s %s\n' % (k, v))
+        f.write('# %s\n' % ' '.join(cols))
+        for row in zip(*motion):
+            f.write(' '.join('%.9g' % x for x in row) + '\n')
+    return path
+
+
+def recorded(case, name):
+    """A recorded run's motion and figures, as record() wrote them."""
+    path = os.path.join(RESULTS, case, name + '.dat')
     figures = {}
-    for name, folder in runs:
+    for line in open(path):
+        w = line[1:].split() if line.startswith('#') else []
+        if len(w) == 2 and w[0] in FIGURES:
+            figures[w[0]] = float(w[1])
+    cols = ('t', 'q1', 'q2') if case == 'box' else ('t', 'q0', 'q1')
+    motion = table(path, list(cols))
+    if case == 'box':
+        t, z, r = motion
+        motion = [(halfRange(t, z, a, b), halfRange(t, r, a, b))
+                  for a, b in ((3.6, 4.8), (4.2, 5.4))]
+        if t[-1] < 5.4 - 1e-6:
+            raise ValueError('its record ends at %s s' % t[-1])
+    return motion, tuple(figures.get(k) for k in FIGURES)
+
+
+def main(case, listFile, png):
+    names = [l.split()[0] for l in open(listFile) if l.strip()]
+    figures = {}
+    for name in names:
         try:
-            figures[name] = (boxFigures if case == 'box' else foFigures)(folder)
+            figures[name] = recorded(case, name)
         except (OSError, ValueError, IndexError) as e:
-            print('%s %s: no figures (%s)' % (case, name, e))
+            print('%s %s: no record (%s)' % (case, name, e))
     ref = figures.get('n10-co0.125')
     if ref is None:
         print('%s: the reference n10-co0.125 is missing' % case)
@@ -127,7 +188,7 @@ def main(case, listFile, png):
           % (what[0], what[1], what[0]))
     print('|---|---|---|---|---|---|---|---|')
     rows = []
-    for name, folder in runs:
+    for name in names:
         if name not in figures:
             continue
         motion, (cpu, steps, outer, flagged) = figures[name]
@@ -176,6 +237,14 @@ def main(case, listFile, png):
 
 
 if __name__ == '__main__':
+    if (len(sys.argv) == 5 and sys.argv[1] == 'record'
+            and sys.argv[2] in ('box', 'floatingObject')):
+        try:
+            print('Recorded %s' % record(*sys.argv[2:]))
+        except (OSError, ValueError, IndexError) as e:
+            sys.exit('analyse.py record %s %s: %s' % (sys.argv[2],
+                                                        sys.argv[3], e))
+        sys.exit(0)
     if len(sys.argv) != 4 or sys.argv[1] not in ('box', 'floatingObject'):
         sys.exit(__doc__)
     sys.exit(0 if main(*sys.argv[1:]) else 1)
