@@ -23,6 +23,7 @@ Description
     solve(), so every step starts from the same state)
     (the checksum after the calls, all at the same state, so the two
     libraries' agree to round-off).  -quick: a fifth of the calls.
+    -model NAME: only that model (to profile it).
 
 \*---------------------------------------------------------------------------*/
 
@@ -183,6 +184,12 @@ double bestTime(const label nCalls, const Function& f)
 int main(int argc, char *argv[])
 {
     argList::addBoolOption("quick", "a fifth of the calls");
+    argList::addOption
+    (
+        "model",
+        "name",
+        "only this model (to profile it, with perf or callgrind)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
 
@@ -215,8 +222,15 @@ int main(int argc, char *argv[])
         }
     };
 
+    const word only(args.getOrDefault<word>("model", word::null));
+
     for (const auto& model : models)
     {
+        if (!only.empty() && model[0] != only)
+        {
+            continue;
+        }
+
         IStringStream is(model[1]);
         const dictionary dict(is);
 

@@ -12,6 +12,15 @@ Description
     to 1e-10 relative to the size of tau.  Also H is symmetric positive
     definite.
 
+    A free body (a rotational joint on a massless Pxyz from the root, as a
+    floating joint expands) is solved as one 6-degree-of-freedom joint:
+    such trees are among the random ones, and each is checked against the
+    same body on Px, Py and Pz one after another (the general algorithm),
+    with and without bodies on it, joint forces, external forces on every
+    body (the massless one's too) and rate constraints (motors) on the
+    free body and on one of its children: the accelerations and the
+    motors' moments agree to 1e-10.
+
 \*---------------------------------------------------------------------------*/
 
 #include "testCheck.H"
@@ -33,7 +42,8 @@ const char* jointDicts[] =
     "{ type Rz; }", "{ type Ra; axis (-1 0.5 2); }", "{ type Pxyz; }",
     "{ type Rxyz; }", "{ type Ryxz; }", "{ type Rzyx; }", "{ type Rs; }",
     "{ type floating; }", "{ type null; }",
-    "{ type composite; joints ({ type Ry; } { type Pa; axis (0 1 1); }); }"
+    "{ type composite; joints ({ type Ry; } { type Pa; axis (0 1 1); }); }",
+    "{ type composite; joints ({ type Pxyz; } { type Rs; }); }"
 };
 const label nJointTypes = sizeof(jointDicts)/sizeof(jointDicts[0]);
 
@@ -224,6 +234,173 @@ void checkTree(Random& rnd, const label n, const label firstJoint)
     );
 }
 
+//- The body of a free-body model: on composite(TRANSLATION, ROTATION)
+std::string freeBodyModel
+(
+    const std::string& translation,
+    const std::string& rotation,
+    const std::string& bodies
+)
+{
+    return
+        "solver { type Newmark; } g (0 0 -9.81); bodies { b { type rigidBody;"
+        " parent root; mass 1.3; centreOfMass (0.1 -0.2 0.05);"
+        " inertia (0.4 0.02 -0.01 0.3 0.03 0.5);"
+        " transform (0 -1 0 1 0 0 0 0 1) (0.5 0.45 0.1);"
+        " joint { type composite; joints (" + translation + " " + rotation
+      + "); } } " + bodies + "}";
+}
+
+
+//- A free body on ROTATION, with nChildren bodies on it (a chain), against
+//  the same on Px, Py and Pz one after another
+void checkFreeBody(Random& rnd, const std::string& rotation, const label nChildren)
+{
+    std::string children;
+    for (label i = 0; i < nChildren; ++i)
+    {
+        children +=
+            "c" + std::to_string(i) + " { type cuboid; parent "
+          + (i ? "c" + std::to_string(i - 1) : std::string("b"))
+          + "; mass 0.7; L (0.2 0.1 0.3); centreOfMass (0 0 0.15);"
+            " transform (1 0 0 0 0.6 0.8 0 -0.8 0.6) " + vec(rnd, 0.5)
+          + "; joint { type " + (i % 2 ? "Rx" : "Ry") + "; } } ";
+    }
+
+    const RBD::rigidBodyModel free
+    (
+        test::dictFromString
+        (
+            freeBodyModel("{ type Pxyz; }", rotation, children)
+        )
+    );
+    const RBD::rigidBodyModel chain
+    (
+        test::dictFromString
+        (
+            freeBodyModel
+            (
+                "{ type Px; } { type Py; } { type Pz; }", rotation, children
+            )
+        )
+    );
+
+    const std::string what =
+        "free body on " + rotation + " with " + std::to_string(nChildren)
+      + " bodies on it";
+    test::check
+    (
+        free.isFree(free.bodyID("b")) && !chain.isFree(chain.bodyID("b")),
+        "solved as a free body (and not on Px Py Pz), " + what
+    );
+
+    const label nDoF = free.nDoF();
+    RBD::rigidBodyModelState sf(nDoF), sc(nDoF);
+    forAll(sf.q(), i)
+    {
+        sf.q()[i] = 0.5*(2*rnd.sample01<scalar>() - 1);
+        sf.qDot()[i] = 2*(2*rnd.sample01<scalar>() - 1);
+    }
+    sc.q() = sf.q();
+    sc.qDot() = sf.qDot();
+
+    scalarField tau(nDoF);
+    forAll(tau, i)
+    {
+        tau[i] = 10*(2*rnd.sample01<scalar>() - 1);
+    }
+
+    // The same external forces by body: the massless body carrying the
+    // rotation is b_joint0 of one, b_joint2 of the other
+    Field<spatialVector> ff(free.nBodies(), Zero), fc(chain.nBodies(), Zero);
+    for (direction c = 0; c < 6; ++c)
+    {
+        ff[free.bodyID("b")][c] = 5*(2*rnd.sample01<scalar>() - 1);
+        ff[free.bodyID("b_joint0")][c] = 5*(2*rnd.sample01<scalar>() - 1);
+        for (label i = 0; i < nChildren; ++i)
+        {
+            ff[free.bodyID("c" + std::to_string(i))][c] =
+                5*(2*rnd.sample01<scalar>() - 1);
+        }
+    }
+    fc[chain.bodyID("b")] = ff[free.bodyID("b")];
+    fc[chain.bodyID("b_joint2")] = ff[free.bodyID("b_joint0")];
+    for (label i = 0; i < nChildren; ++i)
+    {
+        const word c("c" + std::to_string(i));
+        fc[chain.bodyID(c)] = ff[free.bodyID(c)];
+    }
+
+    // Motors: on the free body (reaction on the root, then on its massless
+    // parent) and on its first child (reaction on the free body)
+    List<RBD::rateConstraint> Cf(nChildren ? 3 : 2), Cc(Cf.size());
+    forAll(Cf, s)
+    {
+        Cf[s].axis = normalised(vector(0.3 + s, 1 - 0.4*s, 0.5));
+        Cf[s].rate = 1 + s;
+        Cf[s].acceleration = 2 - s;
+        Cf[s].horizon = 0.1;
+        Cc[s] = Cf[s];
+    }
+    Cf[0].bodyID = free.bodyID("b");
+    Cc[0].bodyID = chain.bodyID("b");
+    Cf[1].bodyID = free.bodyID("b");
+    Cf[1].parentID = free.bodyID("b_joint0");
+    Cc[1].bodyID = chain.bodyID("b");
+    Cc[1].parentID = chain.bodyID("b_joint2");
+    // Both motors on b about different axes; the second turned so that
+    // they do not ask the same of it
+    Cf[1].axis = Cc[1].axis = normalised(vector(-1, 0.2, 0.7));
+    if (nChildren)
+    {
+        Cf[2].bodyID = free.bodyID("c0");
+        Cf[2].parentID = free.bodyID("b");
+        Cc[2].bodyID = chain.bodyID("c0");
+        Cc[2].parentID = chain.bodyID("b");
+        // The child turns about its joint's axis only
+        Cf[2].axis = Cc[2].axis = Zero;
+    }
+
+    RBD::rigidBodyModelWorkspace wf(free), wc(chain);
+    free.forwardDynamics(sf, wf, tau, ff);
+    chain.forwardDynamics(sc, wc, tau, fc);
+    const scalar scale = max(scalar(1), max(mag(sc.qDdot())));
+    test::checkAbs
+    (
+        max(mag(sf.qDdot() - sc.qDdot()))/scale, 0, 1e-10,
+        "accelerations as on Px Py Pz, " + what
+    );
+
+    // With the motors (a child's axis its joint's, now the pose is known)
+    if (nChildren)
+    {
+        free.updateX0(wf);
+        Cf[2].axis = Cc[2].axis =
+            wf.X0[free.bodyID("c0")].E().T() & vector(0, 1, 0);
+    }
+    wf.setConstraints(free, Cf.size());
+    wc.setConstraints(chain, Cc.size());
+    scalarField qf(nDoF), qc(nDoF);
+    free.constrainedDynamics(tau, ff, Cf, wf, qf);
+    chain.constrainedDynamics(tau, fc, Cc, wc, qc);
+    const scalar scaleC = max(scalar(1), max(mag(qc)));
+    test::checkAbs
+    (
+        max(mag(qf - qc))/scaleC, 0, 1e-10,
+        "accelerations with motors as on Px Py Pz, " + what
+    );
+    scalar dMoment = 0, maxMoment = 1;
+    forAll(Cf, s)
+    {
+        dMoment = max(dMoment, mag(Cf[s].moment - Cc[s].moment));
+        maxMoment = max(maxMoment, mag(Cc[s].moment));
+    }
+    test::checkAbs
+    (
+        dMoment/maxMoment, 0, 1e-10, "motors' moments as on Px Py Pz, " + what
+    );
+}
+
 } // End namespace consistencyTest
 
 
@@ -238,6 +415,24 @@ int main(int argc, char *argv[])
         checkTree(rnd, 6 + trial, (3*trial) % nJointTypes);
     }
     checkTree(rnd, 1, 0);
+
+    // A floating joint from the root, with bodies on it and alone, and the
+    // same made of Pxyz and a quaternion joint
+    checkTree(rnd, 6, 13);
+    checkTree(rnd, 1, 13);
+    checkTree(rnd, 5, nJointTypes - 1);
+
+    for
+    (
+        const std::string rotation
+      : {"{ type Rzyx; }", "{ type Rxyz; }", "{ type Ryxz; }", "{ type Rs; }"}
+    )
+    {
+        for (const label nChildren : {0, 1, 2})
+        {
+            checkFreeBody(rnd, rotation, nChildren);
+        }
+    }
 
     return test::testResult();
 }

@@ -264,6 +264,7 @@ Foam::RBD::rigidBodyModel::rigidBodyModel()
         autoPtr<joint>(new joints::null()),
         autoPtr<rigidBody>(new masslessBody("root"))
     );
+    findFreeBodies();
 }
 
 
@@ -334,6 +335,8 @@ Foam::label Foam::RBD::rigidBodyModel::join
     givenParent_[id] = parentID;
     givenXT_[id] = XT;
 
+    findFreeBodies();
+
     return id;
 }
 
@@ -372,7 +375,57 @@ Foam::label Foam::RBD::rigidBodyModel::merge
         new subBody(std::move(bodyPtr), bodies_[master].name(), master, X)
     );
 
+    findFreeBodies();
+
     return id;
+}
+
+
+void Foam::RBD::rigidBodyModel::findFreeBodies()
+{
+    const label nb = nBodies();
+
+    // Children of each body, counted
+    labelList nChildren(nb, Zero);
+    for (label i = 1; i < nb; ++i)
+    {
+        ++nChildren[lambda_[i]];
+    }
+
+    freeParent_.setSize(nb);
+    freeChild_.setSize(nb);
+    freeLeaf_.setSize(nb);
+    freeIinv_.setSize(nb);
+    freeParent_ = -1;
+    freeChild_ = -1;
+    freeLeaf_ = false;
+
+    for (label i = 1; i < nb; ++i)
+    {
+        const label p = lambda_[i];
+        const rigidInertia& Ip = I_[p];
+        if
+        (
+            p > 0
+         && lambda_[p] == 0
+         && nChildren[p] == 1
+         && joints_[i].rotational()
+         && joints_[p].nDoF() == 3
+         && joints_[p].unitColumn() == 3
+         && Ip.m() == 0
+         && Ip.h() == vector::zero
+         && Ip.Io() == symmTensor::zero
+        )
+        {
+            freeParent_[i] = p;
+            freeChild_[p] = i;
+            freeLeaf_[i] = nChildren[i] == 0;
+            if (freeLeaf_[i])
+            {
+                freeIinv_[i] = articulatedInertia(I_[i]).inverse();
+            }
+        }
+    }
 }
 
 

@@ -3,6 +3,15 @@
     Algorithms (2008): kinematics and the articulated-body algorithm (table
     7.1), recursive Newton-Euler (table 5.1), composite-rigid-body (table
     6.2).  Symbols as in the book; nothing here allocates.
+
+    A free body (a floating joint: a massless body on Pxyz from the root,
+    then the body on a rotational joint) is one joint of six degrees of
+    freedom to the articulated-body algorithm: its acceleration is its
+    articulated inertia's inverse times its joint force less its bias
+    (for a body with nothing on it the inverse is the model's, made once),
+    and the joints' accelerations follow from it; nothing passes to the
+    root.  The same answer as the two joints one after the other, for
+    about a third of the work.
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
@@ -170,6 +179,30 @@ namespace
         return J.c + (v ^ J.v);
     }
 
+    //- For a free body's rotational joint, S_w^-T: S_w the 3x3 matrix of
+    //  the angular parts of its columns of S (the rows of the tensor built
+    //  from them, so its inverse is S_w^-T)
+    inline tensor freeSinvT(const RBD::joint::XSvc& J)
+    {
+        return inv(tensor(J.S[0].w(), J.S[1].w(), J.S[2].w()));
+    }
+
+    //- For a free body, the linear part of the force its massless parent
+    //  passes on, in the body's axes: the parent's joint forces (Pxyz)
+    //  less the linear part of the parent's bias pAp (from external forces
+    //  on the parent; their moment goes to the root), rotated by the
+    //  body's transform X from the parent.  The force acts at the
+    //  rotational joint's centre, the body's origin
+    inline vector freeLinearForce
+    (
+        const spatialTransform& X,
+        const vector& tauP,
+        const spatialVector& pAp
+    )
+    {
+        return X.E() & (tauP - pAp.l());
+    }
+
     //- Whether a spatial force is zero
     inline bool isZero(const spatialVector& f)
     {
@@ -284,6 +317,34 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
         spatialVector& pa = ws.pA[i];
         FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
         vector& u = ws.u[i];
+
+        if (freeChild_[i] >= 0)
+        {
+            // The massless parent of a free body: its parent is the root
+            continue;
+        }
+        else if (freeParent_[i] >= 0)
+        {
+            // A free body: its joint force f (S^T f = tau over the pair's
+            // six degrees of freedom) less its bias, angular part in u[i],
+            // linear in u[p], and its articulated inertia's inverse in
+            // ws.IA[p], for the accelerations; nothing passes to the root
+            const label p = freeParent_[i];
+            const label qp = joints_[p].qIndex();
+            ws.Dinv[i] = freeSinvT(ws.J[i]);
+            u = (ws.Dinv[i] & vector(tau[qi], tau[qi + 1], tau[qi + 2]))
+              - pa.w();
+            ws.u[p] =
+                freeLinearForce
+                (
+                    ws.Xlambda[i],
+                    vector(tau[qp], tau[qp + 1], tau[qp + 2]),
+                    ws.pA[p]
+                )
+              - pa.l();
+            ws.IA[p] = freeLeaf_[i] ? freeIinv_[i] : Ia.inverse();
+            continue;
+        }
 
         if (k >= 0 && n == 1)
         {
@@ -410,10 +471,45 @@ void Foam::RBD::rigidBodyModel::accelerationPass
         const spatialVector& ap = A[lambda_[i]];
         spatialVector& a = A[i];
 
+        if (freeParent_[i] >= 0)
+        {
+            // A free body: done with its parent
+            continue;
+        }
+
         a = transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap);
         if (c)
         {
             a += (*c)[i];
+        }
+
+        const label f = freeChild_[i];
+        if (f >= 0)
+        {
+            // The massless parent of free body f (Pxyz: S = e3 e4 e5, so its
+            // angular acceleration is a's): the free body's acceleration
+            // from its articulated inertia's inverse, then the joints'.
+            // From f's: angular, af.w = E a.w + cf.w + S_w qDdot_f; linear,
+            // af.l = E (a.l + qDdot_p - r x a.w) + cf.l
+            const spatialTransform& X = ws.Xlambda[f];
+            const label qf = joints_[f].qIndex();
+            spatialVector& af = A[f];
+            af = ws.IA[i] & spatialVector(u[f], u[i]);
+            spatialVector ar(af);
+            if (c)
+            {
+                ar -= (*c)[f];
+            }
+            const vector qDdotf((ar.w() - (X.E() & a.w())) & ws.Dinv[f]);
+            const vector al((ar.l() & X.E()) + (X.r() ^ a.w()));
+            const vector qDdotp(al - a.l());
+            a.l() = al;
+            for (direction j = 0; j < 3; ++j)
+            {
+                qDdot[qi + j] = qDdotp[j];
+                qDdot[qf + j] = qDdotf[j];
+            }
+            continue;
         }
 
         if (k >= 0 && n == 1)
@@ -591,6 +687,20 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
             spatialVector pa(ws.pR[i]);
             vector& u = ws.uR[i];
             const label p = lambda_[i];
+
+            if (freeChild_[i] >= 0)
+            {
+                continue;
+            }
+            else if (freeParent_[i] >= 0)
+            {
+                // A free body: as in articulatedBodyDynamics, with no joint
+                // forces (its S_w^-T as that left it in Dinv)
+                u = -pa.w();
+                ws.uR[p] =
+                    freeLinearForce(ws.Xlambda[i], Zero, ws.pR[p]) - pa.l();
+                continue;
+            }
 
             if (Ji.unitColumn() >= 0 && n == 1)
             {
