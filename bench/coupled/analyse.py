@@ -183,10 +183,11 @@ def main(case, listFile, png):
         return out
 
     what = ('heave', 'pitch') if case == 'box' else ('sway', 'pitch')
-    print('| setting | %s error | %s error | %s, correctors\' error | CPU [s] '
-          '| steps | outer correctors a step | steps flagged |'
-          % (what[0], what[1], what[0]))
-    print('|---|---|---|---|---|---|---|---|')
+    amplitudes = ' heave, pitch amplitudes [mm, mrad] |' if case == 'box' else ''
+    print('| setting |%s %s error | %s error | %s, correctors\' error '
+          '| CPU [s] | steps | outer correctors a step | steps flagged |'
+          % (amplitudes, what[0], what[1], what[0]))
+    print('|---|---|---|---|---|---|---|---|%s' % ('---|' if amplitudes else ''))
     rows = []
     for name in names:
         if name not in figures:
@@ -197,9 +198,15 @@ def main(case, listFile, png):
         same = figures.get('n10-co' + co)
         ec = errors(motion, same[0])[0] if same else float('nan')
         rows.append((name, e, cpu))
-        print('| %s | %.1f%% | %.1f%% | %.1f%% | %.0f | %d | %.2f | %d |'
-              % (name, 100*e[0], 100*e[1], 100*ec, cpu or 0, steps, outer,
-                 flagged))
+        amps = ''
+        if case == 'box':
+            amps = ' %.1f / %.1f, %.1f / %.1f |' % (
+                1e3*motion[0][0], 1e3*motion[1][0],
+                1e3*motion[0][1], 1e3*motion[1][1])
+        ecs = '-' if ec != ec else '%.1f%%' % (100*ec)
+        print('| %s |%s %.1f%% | %.1f%% | %s | %.0f | %d | %.2f | %d |'
+              % (name, amps, 100*e[0], 100*e[1], ecs, cpu or 0, steps,
+                 outer, flagged))
 
     # The cheapest setting within 2% of the reference in both motions (the
     # reference itself left out): the one docs/coupling.md recommends
