@@ -27,6 +27,7 @@ Description
 #include "testModels.H"
 #include "Random.H"
 #include "OStringStream.H"
+#include <fenv.h>
 
 using namespace Foam;
 
@@ -401,6 +402,63 @@ void checkFreeBody(Random& rnd, const std::string& rotation, const label nChildr
     );
 }
 
+//- A massless frame on a floating joint with a hull merged into it (the
+//  pendulum tutorial's masslessBody and mergeWith): the frame is free, and
+//  massless until the hull is merged.  Built with floating-point traps on,
+//  as an OpenFOAM application runs: no division by zero on the way; then
+//  the same as the hull on the floating joint itself
+void checkMergedFreeBody()
+{
+    const std::string hull =
+        " type cuboid; mass 2; L (0.3 0.2 0.5);"
+        " centreOfMass (0.02 -0.01 0.25);";
+    const std::string frame =
+        "solver { type Newmark; } g (0 0 -9.81); bodies {"
+        " frame { type masslessBody; parent root;"
+        " transform (1 0 0 0 1 0 0 0 1) (0.5 0.45 0.1);"
+        " joint { type floating; } }"
+        " hull {" + hull + " mergeWith frame;"
+        " transform (1 0 0 0 1 0 0 0 1) (0 0 0); } }";
+    const std::string alone =
+        "solver { type Newmark; } g (0 0 -9.81); bodies {"
+        " hull {" + hull + " parent root;"
+        " transform (1 0 0 0 1 0 0 0 1) (0.5 0.45 0.1);"
+        " joint { type floating; } } }";
+
+    feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    const RBD::rigidBodyModel merged(test::dictFromString(frame));
+    fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    const RBD::rigidBodyModel single(test::dictFromString(alone));
+
+    test::check
+    (
+        merged.isFree(merged.bodyID("frame"))
+     && !merged.isFree(merged.bodyID("hull")),
+        "a massless floating frame with a hull merged into it is built with"
+        " floating-point traps on, and is free"
+    );
+
+    RBD::rigidBodyModelState sm(6), ss(6);
+    forAll(sm.q(), i)
+    {
+        sm.q()[i] = ss.q()[i] = 0.1*(i + 1);
+        sm.qDot()[i] = ss.qDot()[i] = 0.3 - 0.1*i;
+    }
+    const scalarField tau(6, Zero);
+    Field<spatialVector> fm(merged.nBodies(), Zero), fs(single.nBodies(), Zero);
+    fm[merged.bodyID("frame")] = spatialVector(0.5, 1, 80, 0, 2, 0);
+    fs[single.bodyID("hull")] = fm[merged.bodyID("frame")];
+    RBD::rigidBodyModelWorkspace wm(merged), ws(single);
+    merged.forwardDynamics(sm, wm, tau, fm);
+    single.forwardDynamics(ss, ws, tau, fs);
+    test::checkAbs
+    (
+        max(mag(sm.qDdot() - ss.qDdot()))/max(mag(ss.qDdot())), 0, 1e-12,
+        "the frame with the hull merged moves as the hull on the floating"
+        " joint"
+    );
+}
+
 } // End namespace consistencyTest
 
 
@@ -421,6 +479,8 @@ int main(int argc, char *argv[])
     checkTree(rnd, 6, 13);
     checkTree(rnd, 1, 13);
     checkTree(rnd, 5, nJointTypes - 1);
+
+    checkMergedFreeBody();
 
     for
     (

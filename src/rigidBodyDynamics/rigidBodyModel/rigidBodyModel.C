@@ -381,6 +381,24 @@ Foam::label Foam::RBD::rigidBodyModel::merge
 }
 
 
+bool Foam::RBD::rigidBodyModel::positiveDefinite(const rigidInertia& I)
+{
+    if (!(I.m() > 0))
+    {
+        return false;
+    }
+
+    // The inertia about the centre of mass (the Schur complement of the
+    // mass block), by Sylvester's criterion
+    const vector& h = I.h();
+    const symmTensor Ic(I.Io() - (magSqr(h)*symmTensor::I - sqr(h))/I.m());
+    return
+        Ic.xx() > 0
+     && Ic.xx()*Ic.yy() - sqr(Ic.xy()) > 0
+     && det(Ic) > 0;
+}
+
+
 void Foam::RBD::rigidBodyModel::findFreeBodies()
 {
     const label nb = nBodies();
@@ -394,11 +412,11 @@ void Foam::RBD::rigidBodyModel::findFreeBodies()
 
     freeParent_.setSize(nb);
     freeChild_.setSize(nb);
-    freeLeaf_.setSize(nb);
+    freeIinvValid_.setSize(nb);
     freeIinv_.setSize(nb);
     freeParent_ = -1;
     freeChild_ = -1;
-    freeLeaf_ = false;
+    freeIinvValid_ = false;
 
     for (label i = 1; i < nb; ++i)
     {
@@ -419,8 +437,14 @@ void Foam::RBD::rigidBodyModel::findFreeBodies()
         {
             freeParent_[i] = p;
             freeChild_[p] = i;
-            freeLeaf_[i] = nChildren[i] == 0;
-            if (freeLeaf_[i])
+
+            // With nothing on it, the body's articulated inertia is its own:
+            // inverted here, once, if it can be.  While the model is built a
+            // body may still be massless, before others are merged into it
+            // (this runs again then); one that stays so is inverted at each
+            // call, as a body with others on it is
+            freeIinvValid_[i] = nChildren[i] == 0 && positiveDefinite(I_[i]);
+            if (freeIinvValid_[i])
             {
                 freeIinv_[i] = articulatedInertia(I_[i]).inverse();
             }

@@ -342,7 +342,7 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
                     ws.pA[p]
                 )
               - pa.l();
-            ws.IA[p] = freeLeaf_[i] ? freeIinv_[i] : Ia.inverse();
+            ws.IA[p] = freeIinvValid_[i] ? freeIinv_[i] : Ia.inverse();
             continue;
         }
 
