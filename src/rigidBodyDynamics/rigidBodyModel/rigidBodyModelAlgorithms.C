@@ -352,13 +352,17 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
             // IA c - U D^-1 U^T c: IA c need not wait for the division
             const spatialVector& c = ws.c[i];
             U[0] = Ia.column(k);
-            const spatialVector IAc(Ia & c);
             const scalar Dinv = 1/U[0][k];
             ws.Dinv[i].xx() = Dinv;
             u.x() = tau[qi] - pa[k];
 
-            pa += IAc + U[0]*(Dinv*(u.x() - (U[0] && c)));
-            Ia.subtractOuter(Dinv*U[0], U[0]);
+            // Ia and pa go to the parent: none for a child of the root
+            if (lambda_[i])
+            {
+                const spatialVector IAc(Ia & c);
+                pa += IAc + U[0]*(Dinv*(u.x() - (U[0] && c)));
+                Ia.subtractOuter(Dinv*U[0], U[0]);
+            }
 
             // For the accelerations: U a = U (Xlambda a_parent + c) =
             // (Xlambda^T U) a_parent + U c, so that qDdot need not wait for
@@ -410,6 +414,11 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
             }
 
             const tensor& Dinv = ws.Dinv[i] = invD(D, n);
+            if (!lambda_[i])
+            {
+                // Ia and pa go to the parent: none for a child of the root
+                continue;
+            }
             const vector Dinvu(Dinv & u);
 
             for (label j = 0; j < n; ++j)
