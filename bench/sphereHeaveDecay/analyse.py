@@ -1,10 +1,18 @@
 #!/usr/bin/env python3
-"""bench/sphereHeaveDecay/run's table and plot.
+"""bench/sphereHeaveDecay/run's records, table and plot.
 
-    analyse.py RUNS PNG
+    analyse.py record NAME FOLDER
+        keeps what the finished run in FOLDER gave in RESULTS/NAME/
+        (committed, so a run made once is kept when the machine and its
+        run folder are not): its figures (postProcessing/heaveDecay, the
+        tutorial's ./results), the heave over time (t and q0 of its joined
+        table) and, in RESULTS/NAME/log, its cells, CPU time, steps, outer
+        correctors a step, steps flagged and largest coupling residual,
+        with the date and commit
+    analyse.py RESULTS PNG
 
-RUNS: the folder of the runs (runs/<name>, each a copy of the tutorial
-after its ./Allrun).  Prints a markdown table: each run's mesh, period and
+RESULTS: bench/sphereHeaveDecay/results.  Prints a markdown table: each
+recorded run's mesh, period and
 decay rate (the tutorial's ./results, postProcessing/heaveDecay) and their
 errors against the experiment, the interFoam CPU time, time steps, outer
 correctors a step, steps flagged "coupling not converged" and the largest
@@ -13,6 +21,7 @@ the 0.1 D runs' errors against their CPU time, beside the costs Kramer et
 al. (2021) give for the OpenFOAM cases of OES Task 10.  Runs missing are
 left out; exit status 1 if none is there.
 """
+import datetime
 import os
 import re
 import subprocess
@@ -60,20 +69,66 @@ def largestResidual(log):
     return value
 
 
-def main(runs, png):
+LOGFIGURES = ('cells', 'cpu', 'steps', 'outer', 'flagged', 'residual')
+
+
+def record(name, folder):
+    """Keep a finished run's figures, heave and log figures in
+    RESULTS/name (RESULTS: this script's results folder)."""
+    figures = os.path.join(folder, 'postProcessing', 'heaveDecay')
+    table = os.path.join(folder, 'postProcessing', 'joined', 'sphere.dat')
+    log = os.path.join(folder, 'log.interFoam')
+    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'results',
+                       name)
+    os.makedirs(out, exist_ok=True)
+    with open(figures) as f, open(os.path.join(out, 'heaveDecay'), 'w') as g:
+        g.write(f.read())
+    # The heave over time: columns t and q0, found by the header
+    names, rows = None, []
+    for line in open(table):
+        w = line[1:].split() if line.startswith('#') else None
+        if w and w[0] == 't':
+            names = w
+        elif w is None and line.strip() and names:
+            v = line.split()
+            rows.append((v[0], v[names.index('q0')]))
+    with open(os.path.join(out, 'heave.dat'), 'w') as g:
+        g.write('# t q0 (heave [m]): bench/sphereHeaveDecay/run %s\n' % name)
+        for t, z in rows:
+            g.write('%s %s\n' % (t, z))
+    cpu, steps, outer, flagged = logFigures(log)
+    commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'],
+                            capture_output=True, text=True,
+                            cwd=os.path.dirname(os.path.abspath(__file__)))
+    with open(os.path.join(out, 'log'), 'w') as g:
+        g.write('# bench/sphereHeaveDecay/run %s, made %s at commit %s\n'
+                % (name, datetime.datetime.now().strftime('%Y-%m-%d %H:%M'),
+                   commit.stdout.strip() or '?'))
+        for k, v in zip(LOGFIGURES, (cells(folder), cpu, steps, outer,
+                                     flagged, largestResidual(log))):
+            g.write('%s %s\n' % (k, v))
+    return out
+
+
+def main(results, png):
     rows = []
     for name in ORDER:
-        folder = os.path.join(runs, name)
-        figures = os.path.join(folder, 'postProcessing', 'heaveDecay')
-        log = os.path.join(folder, 'log.interFoam')
+        folder = os.path.join(results, name)
+        figures = os.path.join(folder, 'heaveDecay')
+        log = os.path.join(folder, 'log')
         if not (os.path.isfile(figures) and os.path.isfile(log)):
             continue
         f = dictionary(figures)
-        cpu, steps, outer, flagged = logFigures(log)
-        rows.append((name, f, cpu, steps, outer, flagged,
-                     largestResidual(log), cells(folder)))
+        g = {}
+        for line in open(log):
+            w = line.split()
+            if len(w) == 2 and w[0] in LOGFIGURES:
+                g[w[0]] = None if w[1] == 'None' else float(w[1])
+        rows.append((name, f, g.get('cpu'), int(g.get('steps') or 0),
+                     g.get('outer') or 0, int(g.get('flagged') or 0),
+                     g.get('residual'), int(g.get('cells') or 0)))
     if not rows:
-        print('bench/sphereHeaveDecay: no runs in %s' % runs)
+        print('bench/sphereHeaveDecay: no runs recorded in %s' % results)
         return False
 
     print('| run | cells | period [s] | error | decay rate [1/s] | error '
@@ -133,6 +188,12 @@ plot "%s" using 1:2 with points pt 7 ps 1.5 title "period (this library)", \\
 
 
 if __name__ == '__main__':
+    if len(sys.argv) == 4 and sys.argv[1] == 'record':
+        try:
+            print('Recorded %s' % record(*sys.argv[2:]))
+        except (OSError, ValueError, IndexError) as e:
+            sys.exit('analyse.py record %s: %s' % (sys.argv[2], e))
+        sys.exit(0)
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     sys.exit(0 if main(*sys.argv[1:]) else 1)
