@@ -217,7 +217,7 @@ def main(case, listFile, png):
         print('cheapest within 2%% of the reference: %s, %.0f s of CPU'
               % (name, cpu))
     else:
-        print('cheapest within 2%% of the reference: none of these runs')
+        print('cheapest within 2% of the reference: none of these runs')
 
     data = png + '.dat'
     with open(data, 'w') as f:
