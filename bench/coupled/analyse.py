@@ -209,15 +209,22 @@ def main(case, listFile, png):
                  outer, flagged))
 
     # The cheapest setting within 2% of the reference in both motions (the
-    # reference itself left out): the one docs/coupling.md recommends
-    within = [(cpu, name) for name, e, cpu in rows
-              if name != 'n10-co0.125' and cpu and max(e) <= 0.02]
-    if within:
-        cpu, name = min(within)
-        print('cheapest within 2%% of the reference: %s, %.0f s of CPU'
-              % (name, cpu))
-    else:
-        print('cheapest within 2% of the reference: none of these runs')
+    # reference itself left out): the one docs/coupling.md recommends.  For
+    # the box also in heave alone: its pitch is a sensitivity study
+    # (docs/validation.md), its heave the validated motion
+    tests = [('', lambda e: max(e))]
+    if case == 'box':
+        tests.append((' in heave', lambda e: e[0]))
+    for label, error in tests:
+        within = [(cpu, name) for name, e, cpu in rows
+                  if name != 'n10-co0.125' and cpu and error(e) <= 0.02]
+        if within:
+            cpu, name = min(within)
+            print('cheapest within 2%% of the reference%s: %s, %.0f s of CPU'
+                  % (label, name, cpu))
+        else:
+            print('cheapest within 2%% of the reference%s: none of these runs'
+                  % label)
 
     data = png + '.dat'
     with open(data, 'w') as f:
