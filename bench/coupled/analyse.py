@@ -113,22 +113,27 @@ def foRun(folder):
 FIGURES = ('cpu', 'steps', 'outer', 'flagged')
 
 
+def made():
+    """'made <date> at commit <hash>', for a record's header."""
+    commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'],
+                            capture_output=True, text=True,
+                            cwd=os.path.dirname(os.path.abspath(__file__)))
+    return 'made %s at commit %s' % (
+        datetime.datetime.now().strftime('%Y-%m-%d %H:%M'),
+        commit.stdout.strip() or '?')
+
+
 def record(case, name, folder):
     """Keep a made run's figures and motion in RESULTS/<case>/<name>.dat."""
     motion, figures = (boxRun if case == 'box' else foRun)(folder)
     if figures[0] is None:
         raise ValueError('its log has no ExecutionTime')
-    commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'],
-                            capture_output=True, text=True,
-                            cwd=os.path.dirname(os.path.abspath(__file__)))
     os.makedirs(os.path.join(RESULTS, case), exist_ok=True)
     path = os.path.join(RESULTS, case, name + '.dat')
     cols = ('t', 'q1', 'q2') if case == 'box' else ('t', 'q0', 'q1')
     with open(path, 'w') as f:
         f.write('# bench/coupled/run %s: %s\n' % (case, name))
-        f.write('# made %s at commit %s\n'
-                % (datetime.datetime.now().strftime('%Y-%m-%d %H:%M'),
-                   commit.stdout.strip() or '?'))
+        f.write('# %s\n' % made())
         for k, v in zip(FIGURES, figures):
             f.write('# %s %s\n' % (k, v))
         f.write('# %s\n' % ' '.join(cols))

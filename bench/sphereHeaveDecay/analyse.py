@@ -21,7 +21,6 @@ the 0.1 D runs' errors against their CPU time, beside the costs Kramer et
 al. (2021) give for the OpenFOAM cases of OES Task 10.  Runs missing are
 left out; exit status 1 if none is there.
 """
-import datetime
 import os
 import re
 import subprocess
@@ -29,7 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', 'coupled'))
-from analyse import logFigures  # noqa: E402  (bench/coupled/analyse.py)
+from analyse import logFigures, made  # noqa: E402  (bench/coupled/analyse.py)
 
 ORDER = ['d0.1', 'd0.3', 'd0.5', 'coarse', 'fine', 'co0.25', 'fixed3']
 WHAT = {
@@ -97,13 +96,8 @@ def record(name, folder):
         for t, z in rows:
             g.write('%s %s\n' % (t, z))
     cpu, steps, outer, flagged = logFigures(log)
-    commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'],
-                            capture_output=True, text=True,
-                            cwd=os.path.dirname(os.path.abspath(__file__)))
     with open(os.path.join(out, 'log'), 'w') as g:
-        g.write('# bench/sphereHeaveDecay/run %s, made %s at commit %s\n'
-                % (name, datetime.datetime.now().strftime('%Y-%m-%d %H:%M'),
-                   commit.stdout.strip() or '?'))
+        g.write('# bench/sphereHeaveDecay/run %s, %s\n' % (name, made()))
         for k, v in zip(LOGFIGURES, (cells(folder), cpu, steps, outer,
                                      flagged, largestResidual(log))):
             g.write('%s %s\n' % (k, v))
