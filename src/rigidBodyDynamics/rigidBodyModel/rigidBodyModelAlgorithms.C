@@ -11,7 +11,7 @@
     (for a body with nothing on it the inverse is the model's, made once),
     and the joints' accelerations follow from it; nothing passes to the
     root.  The same answer as the two joints one after the other, for
-    about a third of the work.
+    about a quarter of the instructions (callgrind, docs/performance.md).
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
