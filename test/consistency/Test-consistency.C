@@ -21,6 +21,11 @@ Description
     free body and on one of its children: the accelerations and the
     motors' moments agree to 1e-10.
 
+    Body transforms X0 (made as copies and sums where no frame turns) are
+    the products of the joints' transforms, and points' velocities the
+    central differences of their positions, on a tree of slides, turning
+    bodies, a massless frame and a merged body.
+
 \*---------------------------------------------------------------------------*/
 
 #include "testCheck.H"
@@ -459,6 +464,132 @@ void checkMergedFreeBody()
     );
 }
 
+//- Body transforms X0 and points' motion on a tree where slides follow
+//  slides and frames do not turn (X0 made as a copy and a sum), slides
+//  follow turning bodies, a massless frame carries a body, and a body is
+//  merged: X0 against the product of the Xlambdas up to the root, the
+//  points' velocities against central differences of their positions,
+//  globalPointMotion against globalPoint and v, and forward against
+//  inverse dynamics
+void checkBodyTransforms(Random& rnd)
+{
+    const std::string I3 = "transform (1 0 0 0 1 0 0 0 1) ";
+    const std::string cuboid =
+        " type cuboid; mass 2; L (0.3 0.2 0.5); centreOfMass (0 0 0.1);";
+    const std::string model =
+        "solver { type Newmark; } g (0 0 -9.81); bodies {"
+        " a {" + cuboid + " parent root; " + I3 + "(0.5 0.45 0.1);"
+        " joint { type composite; joints ({ type Py; } { type Ry; }); } }"
+        " b {" + cuboid + " parent a; " + I3 + "(0 0 0.3); joint { type Pz; } }"
+        " c {" + cuboid + " parent b; " + I3 + "(0.1 0 0); joint { type Rx; } }"
+        " d {" + cuboid + " parent root; " + I3 + "(1 0 0); joint { type Px; } }"
+        " e {" + cuboid + " parent d; " + I3 + "(0 1 0); joint { type Pxyz; } }"
+        " f {" + cuboid + " parent e; transform (0 1 0 -1 0 0 0 0 1) (0 0 0.2);"
+        " joint { type Pz; } }"
+        " g {" + cuboid + " parent f; " + I3 + "(0 0 0.1); joint { type Py; } }"
+        " k { type masslessBody; parent d; " + I3 + "(0 0.2 0);"
+        " joint { type Rz; } }"
+        " l {" + cuboid + " parent k; " + I3 + "(0.3 0 0); joint { type Px; } }"
+        " h { type sphere; mass 1; radius 0.1; centreOfMass (0 0 0);"
+        " mergeWith c; transform (0 0 1 0 1 0 -1 0 0) (0.1 0.2 0.3); } }";
+
+    const RBD::rigidBodyModel m(test::dictFromString(model));
+    const label nDoF = m.nDoF();
+    RBD::rigidBodyModelState state(nDoF);
+    forAll(state.q(), i)
+    {
+        state.q()[i] = 0.5*(2*rnd.sample01<scalar>() - 1);
+        state.qDot()[i] = 2*(2*rnd.sample01<scalar>() - 1);
+    }
+    RBD::rigidBodyModelWorkspace ws(m);
+    m.kinematics(state, ws);
+    m.updateX0(ws);
+
+    // X0 against the product of the Xlambdas
+    scalar errX0 = 0;
+    for (label i = 1; i < m.nBodies(); ++i)
+    {
+        spatialTransform X(ws.Xlambda[i]);
+        for (label p = m.lambda()[i]; p; p = m.lambda()[p])
+        {
+            X = X & ws.Xlambda[p];
+        }
+        errX0 = max(errX0, cmptMax(cmptMag(X.E() - ws.X0[i].E())));
+        errX0 = max(errX0, cmptMax(cmptMag(X.r() - ws.X0[i].r())));
+    }
+    test::checkAbs
+    (
+        errX0, 0, 1e-14,
+        "X0 of every body is the product of the Xlambdas up to the root"
+        " (slides on slides, on turning bodies, a massless frame)"
+    );
+
+    // Points' motion: against globalPoint and v, and against central
+    // differences of the positions (no quaternion: q moves as qDot)
+    const vector p0(0.05, -0.1, 0.2);
+    const scalar dt = 1e-5;
+    RBD::rigidBodyModelState sp(state), sm(state);
+    sp.q() += dt*state.qDot();
+    sm.q() -= dt*state.qDot();
+    RBD::rigidBodyModelWorkspace wp(m), wm(m);
+    m.kinematics(sp, wp);
+    m.kinematics(sm, wm);
+
+    scalar errSame = 0, errFD = 0;
+    for (const word& name : m.bodyNames())
+    {
+        const label id = m.bodyID(name);
+        const RBD::rigidBodyModel::pointMotion pm
+        (
+            m.globalPointMotion(id, p0, ws)
+        );
+        errSame = max(errSame, mag(pm.x - m.globalPoint(id, p0, ws)));
+        errSame = max(errSame, mag(pm.v - m.v(id, p0, ws).l()));
+        const vector vFD
+        (
+            (m.globalPoint(id, p0, wp) - m.globalPoint(id, p0, wm))/(2*dt)
+        );
+        errFD = max(errFD, mag(pm.v - vFD)/max(scalar(1), mag(vFD)));
+    }
+    test::checkAbs
+    (
+        errSame, 0, 1e-15,
+        "globalPointMotion gives globalPoint and v's linear part (every body,"
+        " the merged one too)"
+    );
+    test::checkAbs
+    (
+        errFD, 0, 1e-8,
+        "a point's velocity from globalPointMotion is the central difference"
+        " of its positions (every body, the merged one too)"
+    );
+
+    // Forward then inverse dynamics, with forces on every body (the
+    // massless frame's too)
+    scalarField tau(nDoF);
+    forAll(tau, i)
+    {
+        tau[i] = 10*(2*rnd.sample01<scalar>() - 1);
+    }
+    Field<spatialVector> fx(m.nBodies());
+    forAll(fx, i)
+    {
+        for (direction c = 0; c < 6; ++c)
+        {
+            fx[i][c] = 5*(2*rnd.sample01<scalar>() - 1);
+        }
+    }
+    m.forwardDynamics(state, ws, tau, fx);
+    scalarField tauID(nDoF);
+    m.inverseDynamics(state, ws, fx, tauID);
+    test::checkAbs
+    (
+        max(mag(tauID - tau))/max(scalar(1), max(mag(tau))), 0, 1e-10,
+        "inverse dynamics of ABA accelerations returns tau on the tree of"
+        " slides, a massless frame and a merged body"
+    );
+}
+
 } // End namespace consistencyTest
 
 
@@ -481,6 +612,7 @@ int main(int argc, char *argv[])
     checkTree(rnd, 5, nJointTypes - 1);
 
     checkMergedFreeBody();
+    checkBodyTransforms(rnd);
 
     for
     (

@@ -39,6 +39,7 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
             << exit(FatalError);
     }
     I_.append(rigidInertia(*bodyPtr));
+    massless_.append(isMassless(I_.last()));
     givenJoints_.append(nullptr);
     givenParent_.append(parentID);
     givenXT_.append(XT);
@@ -47,6 +48,11 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
     lambda_.append(parentID);
     XT_.append(XT);
     XTrotates_.append(XT.E() != tensor::I);
+    X0rotates_.append
+    (
+        parentID >= 0
+     && (X0rotates_[parentID] || XlambdaRotation(bodyID) != 3)
+    );
 
     return bodyID;
 }
@@ -367,6 +373,7 @@ Foam::label Foam::RBD::rigidBodyModel::merge
     I.add(*bodyPtr, X);
     bodies_[master].setInertia(I);
     I_[master] = rigidInertia(I);
+    massless_[master] = isMassless(I_[master]);
 
     const label id = mergedBodyOffset + mergedBodies_.size();
     bodyIDs_.insert(bodyPtr->name(), id);
@@ -590,20 +597,14 @@ Foam::spatialVector Foam::RBD::rigidBodyModel::v
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    // The point in the master's frame
     const label master = masterID(bodyID);
-    vector pm(p);
-    if (isMerged(bodyID))
-    {
-        const spatialTransform& X = mergedBody(bodyID).masterXT();
-        pm = (X.E().T() & p) + X.r();
-    }
-
+    const vector pm(inMaster(bodyID, p));
     const spatialVector& vb = ws.v[master];
     updateX0(ws);
-    const tensor ET(ws.X0[master].E().T());
+    const tensor& E = ws.X0[master].E();
 
-    return spatialVector(ET & vb.w(), ET & (vb.l() + (vb.w() ^ pm)));
+    // E^T u, as u E
+    return spatialVector(vb.w() & E, (vb.l() + (vb.w() ^ pm)) & E);
 }
 
 
@@ -614,8 +615,30 @@ Foam::vector Foam::RBD::rigidBodyModel::globalPoint
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    const spatialTransform X(X0(bodyID, ws));
-    return (X.E().T() & p) + X.r();
+    updateX0(ws);
+    const spatialTransform& X = ws.X0[masterID(bodyID)];
+
+    // E^T u as u E
+    return (inMaster(bodyID, p) & X.E()) + X.r();
+}
+
+
+Foam::RBD::rigidBodyModel::pointMotion
+Foam::RBD::rigidBodyModel::globalPointMotion
+(
+    const label bodyID,
+    const vector& p,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    updateX0(ws);
+    const label master = masterID(bodyID);
+    const vector pm(inMaster(bodyID, p));
+    const spatialTransform& X = ws.X0[master];
+    const spatialVector& vb = ws.v[master];
+
+    // E^T u as u E
+    return {(pm & X.E()) + X.r(), (vb.l() + (vb.w() ^ pm)) & X.E()};
 }
 
 

@@ -262,21 +262,34 @@ void Foam::RBD::rigidBodyModel::kinematics
 }
 
 
-void Foam::RBD::rigidBodyModel::updateX0
+void Foam::RBD::rigidBodyModel::fillX0
 (
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    if (ws.X0valid)
-    {
-        return;
-    }
-
-    ws.X0[0] = spatialTransform();
+    // X0 = Xlambda X0[parent]: a copy and a sum where the parent's X0 only
+    // shifts (the root's: ws.X0[0] stays the identity) or Xlambda does
     for (label i = 1; i < nBodies(); ++i)
     {
         const label p = lambda_[i];
-        ws.X0[i] = p ? ws.Xlambda[i] & ws.X0[p] : ws.Xlambda[i];
+        const spatialTransform& Xl = ws.Xlambda[i];
+        const spatialTransform& Xp = ws.X0[p];
+        spatialTransform& X = ws.X0[i];
+
+        if (!X0rotates_[p])
+        {
+            X.E() = Xl.E();
+            X.r() = Xp.r() + Xl.r();
+        }
+        else if (XlambdaRotation(i) == 3)
+        {
+            X.E() = Xp.E();
+            X.r() = Xp.r() + (Xl.r() & Xp.E());
+        }
+        else
+        {
+            X = Xl & Xp;
+        }
     }
     ws.X0valid = true;
 }
@@ -295,9 +308,16 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
     // Body inertias and bias forces, external forces taken to body axes
     for (label i = 1; i < nb; ++i)
     {
-        const spatialVector& v = ws.v[i];
         ws.IA[i] = I_[i];
-        ws.pA[i] = v ^ *(I_[i] & v);
+        if (massless_[i])
+        {
+            ws.pA[i] = Zero;
+        }
+        else
+        {
+            const spatialVector& v = ws.v[i];
+            ws.pA[i] = v ^ *(I_[i] & v);
+        }
         if (!isZero(fx[i]))
         {
             updateX0(ws);

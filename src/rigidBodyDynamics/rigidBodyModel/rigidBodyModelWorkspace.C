@@ -19,6 +19,7 @@ void Foam::RBD::rigidBodyModelWorkspace::resize(const rigidBodyModel& model)
     J.setSize(n);
     Xlambda.setSize(n);
     X0.setSize(n);
+    X0 = spatialTransform();    // the root's stays the identity
     X0valid = false;
     v.setSize(n, Zero);
     a.setSize(n, Zero);

@@ -37,12 +37,11 @@ void Foam::RBD::restraints::linearDamper::restrain
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    addForce
+    const rigidBodyModel::pointMotion pm
     (
-        fx,
-        model_.globalPoint(bodyID_, Zero, ws),
-        -coeff_*model_.v(bodyID_, Zero, ws).l()
+        model_.globalPointMotion(bodyID_, Zero, ws)
     );
+    addForce(fx, pm.x, -coeff_*pm.v);
 }
 
 

@@ -38,7 +38,11 @@ void Foam::RBD::restraints::linearSpring::restrain
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    const rigidBodyModel::pointMotion pm
+    (
+        model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
+    );
+    const vector& p = pm.x;
     const vector r(p - anchor_);
     const scalar L = mag(r);
 
@@ -47,8 +51,8 @@ void Foam::RBD::restraints::linearSpring::restrain
         return;
     }
 
-    const vector dir(r/L);
-    const scalar LDot = dir & model_.v(bodyID_, refAttachmentPt_, ws).l();
+    const vector dir(r*(1/L));
+    const scalar LDot = dir & pm.v;
 
     addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
 }
