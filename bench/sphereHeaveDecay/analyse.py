@@ -4,8 +4,8 @@
     analyse.py record NAME FOLDER
         keeps what the finished run in FOLDER gave in RESULTS/NAME/
         (committed, so a run made once is kept when the machine and its
-        run folder are not): its figures (postProcessing/heaveDecay, the
-        tutorial's ./results), the heave over time (t and q0 of its joined
+        run folder are not): its figures (postProcessing/heaveDecay, by
+        the tutorial's ./results as it is now, run again in FOLDER), the heave over time (t and q0 of its joined
         table) and, in RESULTS/NAME/log, its cells, CPU time, steps, outer
         correctors a step, steps flagged and largest coupling residual,
         with the date and commit
@@ -23,6 +23,7 @@ left out; exit status 1 if none is there.
 """
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -74,6 +75,14 @@ LOGFIGURES = ('cells', 'cpu', 'steps', 'outer', 'flagged', 'residual')
 def record(name, folder):
     """Keep a finished run's figures, heave and log figures in
     RESULTS/name (RESULTS: this script's results folder)."""
+    # The figures by the tutorial's reduction as it is now (a run's copy
+    # may be older)
+    here = os.path.dirname(os.path.abspath(__file__))
+    shutil.copy(os.path.join(here, '..', '..', 'tutorials', 'interDyMFoam',
+                             'sphereHeaveDecay', 'results'),
+                os.path.join(folder, 'results'))
+    subprocess.run([os.path.join(folder, 'results')], check=True,
+                   stdout=subprocess.DEVNULL)
     figures = os.path.join(folder, 'postProcessing', 'heaveDecay')
     table = os.path.join(folder, 'postProcessing', 'joined', 'sphere.dat')
     log = os.path.join(folder, 'log.interFoam')
@@ -185,7 +194,8 @@ if __name__ == '__main__':
     if len(sys.argv) == 4 and sys.argv[1] == 'record':
         try:
             print('Recorded %s' % record(*sys.argv[2:]))
-        except (OSError, ValueError, IndexError) as e:
+        except (OSError, ValueError, IndexError,
+                subprocess.CalledProcessError) as e:
             sys.exit('analyse.py record %s: %s' % (sys.argv[2], e))
         sys.exit(0)
     if len(sys.argv) != 3:
