@@ -18,7 +18,9 @@ errors against the experiment, the interFoam CPU time, time steps, outer
 correctors a step, steps flagged "coupling not converged" and the largest
 coupling residual of the run (its log's coupling summary).  Writes PNG:
 the 0.1 D runs' errors against their CPU time, beside the costs Kramer et
-al. (2021) give for the OpenFOAM cases of OES Task 10.  Runs missing are
+al. (2021) give for the OpenFOAM cases of OES Task 10, and beside it
+sphereHeaveDecay-drops.png: each recorded drop's heave about its
+equilibrium against the experiment's damped cosine.  Runs missing are
 left out; exit status 1 if none is there.
 """
 import os
@@ -113,6 +115,46 @@ def record(name, folder):
     return out
 
 
+def plotDrops(results, png):
+    """PNG: the recorded drops' heave about their equilibrium, one panel
+    each, beside a damped cosine with the experiment's period and decay
+    rate from the same drop (where the experiment's figures are given)."""
+    panels = []
+    for name in ('d0.1', 'd0.3', 'd0.5'):
+        folder = os.path.join(results, name)
+        heave = os.path.join(folder, 'heave.dat')
+        figures = os.path.join(folder, 'heaveDecay')
+        if os.path.isfile(heave) and os.path.isfile(figures):
+            panels.append((name, heave, dictionary(figures)))
+    if not panels:
+        return
+    script = ['set terminal pngcairo size 900,%d' % (300*len(panels)),
+              'set output "%s"' % png,
+              'set multiplot layout %d,1' % len(panels),
+              'set grid', 'set samples 2000',
+              'set xlabel "time [s]"',
+              'set ylabel "heave - equilibrium [mm]"']
+    for name, heave, f in panels:
+        eq, drop = f['equilibrium'], f['drop']
+        line = ('plot "%s" using 1:(1e3*($2 - %r)) with lines lw 2 '
+                'title "interFoam + this library"' % (heave, eq))
+        if 'periodExperiment' in f:
+            line += (', 1e3*(%r - %r)*exp(-%r*x)*cos(2*pi*x/%r) with lines '
+                     'dt 2 lc rgb "black" title "experiment: period %g s, '
+                     'decay rate %g 1/s"'
+                     % (drop, eq, f['decayRateExperiment'],
+                        f['periodExperiment'], f['periodExperiment'],
+                        f['decayRateExperiment']))
+        script += ['set title "Floating sphere, %s: heave decay from %.2f mm '
+                   '(bench/sphereHeaveDecay/run)"' % (WHAT[name].split(',')[0],
+                                                     1e3*(drop - eq)),
+                   line]
+    script.append('unset multiplot')
+    subprocess.run(['gnuplot'], input='\n'.join(script) + '\n', text=True,
+                   check=True)
+    print('Written %s' % png)
+
+
 def main(results, png):
     rows = []
     for name in ORDER:
@@ -156,6 +198,8 @@ def main(results, png):
         if name not in ('d0.3', 'd0.5') and eT is not None and cpu:
             points.append((cpu, abs(eT), abs(eR), name))
 
+    plotDrops(results, os.path.join(os.path.dirname(png) or '.',
+                                    'sphereHeaveDecay-drops.png'))
     if not points:
         return True
     data = png + '.dat'
