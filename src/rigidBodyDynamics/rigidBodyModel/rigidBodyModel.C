@@ -39,7 +39,6 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
             << exit(FatalError);
     }
     I_.append(rigidInertia(*bodyPtr));
-    massless_.append(isMassless(I_.last()));
     givenJoints_.append(nullptr);
     givenParent_.append(parentID);
     givenXT_.append(XT);
@@ -373,7 +372,6 @@ Foam::label Foam::RBD::rigidBodyModel::merge
     I.add(*bodyPtr, X);
     bodies_[master].setInertia(I);
     I_[master] = rigidInertia(I);
-    massless_[master] = isMassless(I_[master]);
 
     const label id = mergedBodyOffset + mergedBodies_.size();
     bodyIDs_.insert(bodyPtr->name(), id);

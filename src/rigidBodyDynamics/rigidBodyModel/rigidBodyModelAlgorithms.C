@@ -262,6 +262,18 @@ void Foam::RBD::rigidBodyModel::kinematics
 }
 
 
+void Foam::RBD::rigidBodyModel::updateX0
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    if (!ws.X0valid)
+    {
+        fillX0(ws);
+    }
+}
+
+
 void Foam::RBD::rigidBodyModel::fillX0
 (
     const rigidBodyModelWorkspace& ws
@@ -308,16 +320,9 @@ void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
     // Body inertias and bias forces, external forces taken to body axes
     for (label i = 1; i < nb; ++i)
     {
+        const spatialVector& v = ws.v[i];
         ws.IA[i] = I_[i];
-        if (massless_[i])
-        {
-            ws.pA[i] = Zero;
-        }
-        else
-        {
-            const spatialVector& v = ws.v[i];
-            ws.pA[i] = v ^ *(I_[i] & v);
-        }
+        ws.pA[i] = v ^ *(I_[i] & v);
         if (!isZero(fx[i]))
         {
             updateX0(ws);
