@@ -621,25 +621,6 @@ Foam::vector Foam::RBD::rigidBodyModel::globalPoint
 }
 
 
-Foam::RBD::rigidBodyModel::pointMotion
-Foam::RBD::rigidBodyModel::globalPointMotion
-(
-    const label bodyID,
-    const vector& p,
-    const rigidBodyModelWorkspace& ws
-) const
-{
-    updateX0(ws);
-    const label master = masterID(bodyID);
-    const vector pm(inMaster(bodyID, p));
-    const spatialTransform& X = ws.X0[master];
-    const spatialVector& vb = ws.v[master];
-
-    // E^T u as u E
-    return {(pm & X.E()) + X.r(), (vb.l() + (vb.w() ^ pm)) & X.E()};
-}
-
-
 void Foam::RBD::rigidBodyModel::integrate
 (
     scalarField& q,

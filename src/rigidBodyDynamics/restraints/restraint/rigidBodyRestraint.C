@@ -87,22 +87,3 @@ void Foam::RBD::restraint::write(Ostream& os) const
 }
 
 
-void Foam::RBD::restraint::addForce
-(
-    Field<spatialVector>& fx,
-    const vector& p,
-    const vector& F
-) const
-{
-    fx[masterID_] += spatialVector(p ^ F, F);
-}
-
-
-void Foam::RBD::restraint::addMoment
-(
-    Field<spatialVector>& fx,
-    const vector& M
-) const
-{
-    fx[masterID_] += spatialVector(M, Zero);
-}
