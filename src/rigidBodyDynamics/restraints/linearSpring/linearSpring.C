@@ -51,7 +51,7 @@ void Foam::RBD::restraints::linearSpring::restrain
         return;
     }
 
-    const vector dir(r*(1/L));
+    const vector dir(r/L);
     const scalar LDot = dir & pm.v;
 
     addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
