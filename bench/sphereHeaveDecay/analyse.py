@@ -136,8 +136,13 @@ def plotDrops(results, png):
               'set ylabel "heave - equilibrium [mm]"']
     for name, heave, f in panels:
         eq, drop = f['equilibrium'], f['drop']
-        line = ('plot "%s" using 1:(1e3*($2 - %r)) with lines lw 2 '
-                'title "interFoam + this library"' % (heave, eq))
+        # heave.dat holds the joint's q0, the centre's z less the release
+        # height: z = q0 + (drop - q0 of the first row), drop being the
+        # first row's z
+        q00 = next(float(l.split()[1]) for l in open(heave)
+                   if l.strip() and not l.startswith('#'))
+        line = ('plot "%s" using 1:(1e3*($2 + %r - %r)) with lines lw 2 '
+                'title "interFoam + this library"' % (heave, drop - q00, eq))
         if 'periodExperiment' in f:
             line += (', 1e3*(%r - %r)*exp(-%r*x)*cos(2*pi*x/%r) with lines '
                      'dt 2 lc rgb "black" title "experiment: period %g s, '
@@ -222,8 +227,8 @@ set title "Floating sphere, 0.1 D heave decay: error against cost (bench/sphereH
 set key outside bottom center horizontal
 set object 1 rect from 3000*3600,0.54 to 6500*3600,0.82 fc rgb "#cccccc" fs solid 0.5
 set label 1 "3D OpenFOAM, 6-12 M cells\\n(Kramer et al. 2021): period" at 3000*3600,2.5 right font ",9"
-set arrow 1 from 1e7,0.19 to 1e8,0.19 nohead dt 2
-set label 2 "their 2D wedge, 20,000 cells, one laptop core: period 0.19%%" at 1e8,0.13 right font ",9"
+set arrow 1 from 30,0.19 to 1e8,0.19 nohead dt 2
+set label 2 "their 2D wedge, 20,000 cells, one laptop core (its time not given): period 0.19%%" at 1e8,0.13 right font ",9"
 plot "%s" using 1:2 with points pt 7 ps 1.5 title "period (this library)", \\
      "" using 1:2:4 with labels offset 0,1 font ",8" notitle, \\
      "" using 1:3 with points pt 5 ps 1.5 title "decay rate (this library)"
