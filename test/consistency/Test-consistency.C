@@ -124,6 +124,23 @@ std::string randomModel(Random& rnd, const label n, const label firstJoint)
 }
 
 
+//- Random joint forces (within 10) and external forces (within 5)
+void randomLoads(Random& rnd, scalarField& tau, Field<spatialVector>& fx)
+{
+    forAll(tau, i)
+    {
+        tau[i] = 10*(2*rnd.sample01<scalar>() - 1);
+    }
+    forAll(fx, i)
+    {
+        for (direction c = 0; c < 6; ++c)
+        {
+            fx[i][c] = 5*(2*rnd.sample01<scalar>() - 1);
+        }
+    }
+}
+
+
 void checkTree(Random& rnd, const label n, const label firstJoint)
 {
     const RBD::rigidBodyModel m
@@ -143,18 +160,8 @@ void checkTree(Random& rnd, const label n, const label firstJoint)
     }
 
     scalarField tau(nDoF);
-    forAll(tau, i)
-    {
-        tau[i] = 10*(2*rnd.sample01<scalar>() - 1);
-    }
     Field<spatialVector> fx(m.nBodies());
-    forAll(fx, i)
-    {
-        for (direction c = 0; c < 6; ++c)
-        {
-            fx[i][c] = 5*(2*rnd.sample01<scalar>() - 1);
-        }
-    }
+    randomLoads(rnd, tau, fx);
 
     const std::string what =
         std::to_string(n) + " bodies, " + std::to_string(nDoF)
@@ -567,18 +574,8 @@ void checkBodyTransforms(Random& rnd)
     // Forward then inverse dynamics, with forces on every body (the
     // massless frame's too)
     scalarField tau(nDoF);
-    forAll(tau, i)
-    {
-        tau[i] = 10*(2*rnd.sample01<scalar>() - 1);
-    }
     Field<spatialVector> fx(m.nBodies());
-    forAll(fx, i)
-    {
-        for (direction c = 0; c < 6; ++c)
-        {
-            fx[i][c] = 5*(2*rnd.sample01<scalar>() - 1);
-        }
-    }
+    randomLoads(rnd, tau, fx);
     m.forwardDynamics(state, ws, tau, fx);
     scalarField tauID(nDoF);
     m.inverseDynamics(state, ws, fx, tauID);
