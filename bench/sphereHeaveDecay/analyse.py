@@ -33,7 +33,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', 'coupled'))
 from analyse import logFigures, made  # noqa: E402  (bench/coupled/analyse.py)
 
-ORDER = ['d0.1', 'd0.3', 'd0.5', 'coarse', 'fine', 'co0.25', 'fixed3']
+ORDER = ['d0.1', 'd0.3', 'd0.5', 'coarse', 'fine', 'co0.25', 'co1', 'fixed3']
 WHAT = {
     'd0.1': '0.1 D, default mesh, maxCo 0.5, on demand (tol 0.1)',
     'd0.3': '0.3 D, default mesh, maxCo 0.5, on demand',
@@ -41,6 +41,7 @@ WHAT = {
     'coarse': '0.1 D, coarse mesh',
     'fine': '0.1 D, fine mesh',
     'co0.25': '0.1 D, maxCo 0.25',
+    'co1': '0.1 D, maxCo 1',
     'fixed3': '0.1 D, 3 fixed outer correctors',
 }
 
