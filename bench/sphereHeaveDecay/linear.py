@@ -349,19 +349,22 @@ def plot(png, results, red, dt, k):
     t, z = cummins(0.02916, dt, k, 6.0)
     r = red.reduce(t, z)
     linear = (r['period'], r['rate'])
-    points = png + '.cfd'
-    with open(points, 'w') as f:
-        for name, drop in DROPS:
-            cfd = cfd_record(results, name)
-            if cfd:
-                f.write('%g %g %g\n' % (1e3*(cfd['drop'] - cfd['equilibrium']),
-                                        cfd['period'], cfd['decayRate']))
+    points, fine = png + '.cfd', png + '.fine'
+    for path, names in ((points, [n for n, d in DROPS]),
+                        (fine, ['d0.02fine', 'fine'])):
+        with open(path, 'w') as f:
+            for name in names:
+                cfd = cfd_record(results, name)
+                if cfd:
+                    f.write('%g %g %g\n'
+                            % (1e3*(cfd['drop'] - cfd['equilibrium']),
+                               cfd['period'], cfd['decayRate']))
     experiment = png + '.exp'
     with open(experiment, 'w') as f:
         for drop, p, rate in EXPERIMENT:
             f.write('%g %g %g\n' % (1e3*drop, p, rate))
     script = '''
-set terminal pngcairo size 900,800
+set terminal pngcairo size 900,900
 set output "%(png)s"
 set multiplot layout 2,1 title "Floating sphere (Kramer et al. 2021): heave decay against the drop (bench/sphereHeaveDecay/linear.py)"
 set grid
@@ -372,18 +375,20 @@ set ylabel "first damped period [s]"
 plot "%(curve)s" using 1:2 with lines lw 2 title "linear potential flow (Hulme 1982), exact hydrostatics", \\
      %(tl)r with lines dt 2 lc rgb "gray40" title "linear potential flow, linear hydrostatics", \\
      "%(points)s" using 1:2 with points pt 7 ps 1.6 title "interFoam + this library (default mesh)", \\
+     "%(fine)s" using 1:2 with points pt 6 ps 2.2 lw 2 title "the same, fine mesh", \\
      "%(experiment)s" using 1:2 with points pt 5 ps 1.6 lc rgb "black" title "experiment (the issue's figures)"
 set ylabel "decay rate [1/s]"
 set key left bottom
 plot "%(curve)s" using 1:3 with lines lw 2 title "linear potential flow (Hulme 1982), exact hydrostatics", \\
      %(rl)r with lines dt 2 lc rgb "gray40" title "linear potential flow, linear hydrostatics", \\
      "%(points)s" using 1:3 with points pt 7 ps 1.6 title "interFoam + this library (default mesh)", \\
+     "%(fine)s" using 1:3 with points pt 6 ps 2.2 lw 2 title "the same, fine mesh", \\
      "%(experiment)s" using 1:3 with points pt 5 ps 1.6 lc rgb "black" title "experiment (the issue's figures)"
 unset multiplot
-''' % {'png': png, 'curve': curve, 'points': points,
+''' % {'png': png, 'curve': curve, 'points': points, 'fine': fine,
        'experiment': experiment, 'tl': linear[0], 'rl': linear[1]}
     subprocess.run(['gnuplot'], input=script, text=True, check=True)
-    for f in (curve, points, experiment):
+    for f in (curve, points, fine, experiment):
         os.remove(f)
     print('Written %s' % png)
 
