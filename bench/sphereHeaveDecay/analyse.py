@@ -33,8 +33,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', 'coupled'))
 from analyse import logFigures, made  # noqa: E402  (bench/coupled/analyse.py)
 
-ORDER = ['d0.1', 'd0.3', 'd0.5', 'd0.02', 'd0.02fine', 'd0.02dt', 'coarse',
-         'fine', 'co0.25', 'co1', 'fixed3', 'mass7.456']
+ORDER = ['d0.1', 'd0.3', 'd0.5', 'd0.02', 'd0.02fine', 'd0.02dt', 'd0.02alpha',
+         'd0.1alpha', 'coarse', 'fine', 'co0.25', 'co1', 'fixed3', 'mass7.456']
 WHAT = {
     'd0.1': '0.1 D, default mesh, maxCo 0.5, on demand (tol 0.1)',
     'd0.3': '0.3 D, default mesh, maxCo 0.5, on demand',
@@ -42,6 +42,8 @@ WHAT = {
     'd0.02': '0.02 D (6 mm), default mesh, maxCo 0.5, on demand',
     'd0.02fine': '0.02 D (6 mm), fine mesh',
     'd0.02dt': '0.02 D (6 mm), maxCo 0.25, maxDeltaT 0.0025 s',
+    'd0.02alpha': '0.02 D (6 mm), the water filled by setAlphaField',
+    'd0.1alpha': '0.1 D, the water filled by setAlphaField',
     'coarse': '0.1 D, coarse mesh',
     'fine': '0.1 D, fine mesh',
     'co0.25': '0.1 D, maxCo 0.25',

@@ -36,7 +36,7 @@ RESULTS/linear.log, beside the CFD records in RESULTS/<name>/heaveDecay
 for the drops that have them.  PNG: the period and the decay rate against
 the drop, the time-domain model with exact hydrostatics as a curve, the
 CFD records and the experiment's figures as points.  Pure Python and
-gnuplot; about a minute.
+gnuplot; about 15 s.
 
 --check: the model's own checks, each with its tolerance, exit status 1
 if one fails (test/regression/sphereHeaveDecay): with no radiation the
