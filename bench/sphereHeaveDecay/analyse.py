@@ -219,15 +219,20 @@ def main(results, png):
     with open(data, 'w') as out:
         for cpu, eT, eR, name in points:
             out.write('%g %g %g\n' % (cpu, max(eT, 0.01), max(eR, 0.01)))
-    # The runs' names below their period points (the decay rates are
-    # above); runs whose CPU times are within a factor 2 of each other get
-    # their names stacked, one line each, not on top of each other
-    labels, stack, last = [], 0, None
+    # The runs' names above their points; runs whose CPU times are within
+    # a factor 2 of each other share one label ("d0.1, co1, fixed3"), so
+    # that no name lies over another or where a point could be
+    clusters = []
     for cpu, eT, eR, name in sorted(points):
-        stack = stack + 1 if last and cpu < 2*last else 0
-        last = cpu
-        labels.append('set label "%s" at %g,%g offset 1,%g font ",8"'
-                      % (name, cpu, max(eT, 0.01), -1 - 1.1*stack))
+        if clusters and cpu < 2*clusters[-1][-1][0]:
+            clusters[-1].append((cpu, eT, eR, name))
+        else:
+            clusters.append([(cpu, eT, eR, name)])
+    labels = []
+    for c in clusters:
+        top = max(max(p[1], p[2]) for p in c)
+        labels.append('set label "%s" at %g,%g center font ",8"'
+                      % (', '.join(p[3] for p in c), c[0][0], 1.6*top))
     # The paper's OpenFOAM cases (OES Task 10): 3D, 6-12 million cells,
     # 3,000-6,500 CPU hours, the period within 0.54-0.82%; a 2D wedge of
     # 20,000 cells on one laptop core (its time not given), within 0.19%

@@ -201,11 +201,12 @@ def restoring(z, exact):
     return RHO*G*math.pi*h*h*(3*A_SPHERE - h)/3 - MASS*G
 
 
-def cummins(drop, dt, k, end, exact=False):
+def cummins(drop, dt, k, end, exact=False, extra=0.0):
     """The heave after a release from rest at DROP: leapfrog, the memory
     integral by the midpoint rule over the half-step velocities (k holds
-    K at (j + 1/2) dt)."""
-    m = MASS + MU_INF*RHO_V
+    K at (j + 1/2) dt).  EXTRA [kg]: more inertia, the weight and the
+    hydrostatics unchanged (a sensitivity)."""
+    m = MASS + extra + MU_INF*RHO_V
     steps = int(round(end/dt))
     t, z = [0.0], [drop]
     v = []                                  # v at (j + 1/2) dt
@@ -319,6 +320,25 @@ def main():
         for label, p, rate, e1 in rows:
             say('| %.2f mm | %s | %.4f | %.3f | %+.2f |'
                 % (1e3*drop, label, p, rate, e1))
+
+    # The crossings: where the CFD departs from the model
+    say('')
+    for drop in (0.006, 0.02916):
+        t, z = cummins(drop, dt, k, 6.0, exact=True)
+        c = red.reduce(t, z)['crossings']
+        say('  exact hydrostatics, %.2f mm: crossings %s s; periods from '
+            'crossing i to i + 2: %s s'
+            % (1e3*drop, ' '.join('%.4f' % x for x in c[:6]),
+               ' '.join('%.4f' % (c[i + 2] - c[i]) for i in range(4))))
+
+    # A sensitivity: how much more inertia the experiment's periods need
+    say('')
+    for drop in (0.02916, 0.08918):
+        t, z = cummins(drop, dt, k, 6.0, exact=True, extra=0.4)
+        r = red.reduce(t, z)
+        say('  exact hydrostatics and 0.4 kg more inertia, %.2f mm: period '
+            '%.4f s, decay rate %.3f 1/s' % (1e3*drop, r['period'],
+                                           r['rate']))
 
     # The time step's own error: the linear model at half the step
     t, z = cummins(0.02916, dt/2, kernel([(j + 0.5)*dt/2 for j in
