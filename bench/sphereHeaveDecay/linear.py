@@ -36,7 +36,7 @@ RESULTS/linear.log, beside the CFD records in RESULTS/<name>/heaveDecay
 for the drops that have them.  PNG: the period and the decay rate against
 the drop, the time-domain model with exact hydrostatics as a curve, the
 CFD records and the experiment's figures as points.  Pure Python and
-gnuplot; about 15 s.
+gnuplot; about 10 s.
 
 --check: the model's own checks, each with its tolerance, exit status 1
 if one fails (test/regression/sphereHeaveDecay): with no radiation the
@@ -180,6 +180,17 @@ def kernel(times, omega_max=None, d_omega=0.004):
                                   zip(b, omegas)) for t in times]
 
 
+# The time step of the time-domain model [s], and how far back its memory
+# integral reaches [s] (the kernel has died out well before)
+DT = 0.002
+MEMORY = 4.0
+
+
+def kernel_steps(dt):
+    """K at the half steps (j + 1/2) dt, over MEMORY."""
+    return kernel([(j + 0.5)*dt for j in range(int(MEMORY/dt))])
+
+
 def ogilvie(ka_points, dt, k):
     """Hulme's added mass given back by the kernel K (sampled at the
     half steps (j + 1/2) dt): A(omega)/(rho V) at each K a."""
@@ -236,7 +247,7 @@ def cfd_record(results, name):
 
 def self_check(red):
     """The model's checks against exact answers; True if all pass."""
-    dt, memory = 0.002, 4.0
+    dt = DT
     ok = True
 
     def say(what, passed):
@@ -253,7 +264,7 @@ def self_check(red):
               abs(r['period']/exact - 1) < 1e-4
               and abs(last/0.02916 - 1) < 1e-3)
 
-    k = kernel([(j + 0.5)*dt for j in range(int(memory/dt))])
+    k = kernel_steps(dt)
     ka = [0.5, 1.0, 1.5, 2.0]
     given = ogilvie(ka, dt, k)
     worst = max(abs(a - MU(x)) for a, x in zip(given, ka))
@@ -262,7 +273,7 @@ def self_check(red):
 
     t, z = cummins(0.02916, dt, k, 6.0)
     p1 = red.reduce(t, z)['period']
-    k2 = kernel([(j + 0.5)*dt/2 for j in range(int(memory/(dt/2)))])
+    k2 = kernel_steps(dt/2)
     t, z = cummins(0.02916, dt/2, k2, 6.0)
     p2 = red.reduce(t, z)['period']
     ok &= say('the first period at dt %g and %g s: %.5f and %.5f s '
@@ -286,8 +297,8 @@ def main():
         'natural period %.4f s, damped %.4f s, decay rate %.3f 1/s'
         % (w, ka, mu, tn, td, sigma))
 
-    dt, memory = 0.002, 4.0
-    k = kernel([(j + 0.5)*dt for j in range(int(memory/dt))])
+    dt = DT
+    k = kernel_steps(dt)
     check = [0.5, 1.0, 1.5, 2.0]
     given = ogilvie(check, dt, k)
     worst = max(abs(a - MU(x)) for a, x in zip(given, check))
@@ -304,15 +315,17 @@ def main():
     say('| drop | model | first damped period [s] | decay rate [1/s] | '
         'first extreme [mm] |')
     say('|---|---|---|---|---|')
+    # The linear model once (its heave scales with the drop), the one with
+    # exact hydrostatics once for each drop
+    unit = 0.02916
+    linear = red.reduce(*cummins(unit, dt, k, 6.0))
+    exact = {drop: red.reduce(*cummins(drop, dt, k, 6.0, exact=True))
+             for name, drop in DROPS}
     for name, drop in DROPS:
-        rows = []
-        for exact in (False, True):
-            t, z = cummins(drop, dt, k, 6.0, exact)
-            r = red.reduce(t, z)
-            label = ('Cummins, exact hydrostatics' if exact else
-                     'Cummins, linear')
-            rows.append((label, r['period'], r['rate'],
-                         1e3*r['extremes'][0][1]))
+        rows = [('Cummins, linear', linear['period'], linear['rate'],
+                 1e3*linear['extremes'][0][1]*drop/unit),
+                ('Cummins, exact hydrostatics', exact[drop]['period'],
+                 exact[drop]['rate'], 1e3*exact[drop]['extremes'][0][1])]
         cfd = cfd_record(results, name) if results else None
         if cfd:
             rows.append(('CFD (record %s)' % name, cfd['period'],
@@ -324,8 +337,7 @@ def main():
     # The crossings: where the CFD departs from the model
     say('')
     for drop in (0.006, 0.02916):
-        t, z = cummins(drop, dt, k, 6.0, exact=True)
-        c = red.reduce(t, z)['crossings']
+        c = exact[drop]['crossings']
         say('  exact hydrostatics, %.2f mm: crossings %s s; periods from '
             'crossing i to i + 2: %s s'
             % (1e3*drop, ' '.join('%.4f' % x for x in c[:6]),
@@ -340,14 +352,6 @@ def main():
             '%.4f s, decay rate %.3f 1/s' % (1e3*drop, r['period'],
                                            r['rate']))
 
-    # The time step's own error: the linear model at half the step
-    t, z = cummins(0.02916, dt/2, kernel([(j + 0.5)*dt/2 for j in
-                                          range(int(memory/(dt/2)))]), 6.0)
-    r = red.reduce(t, z)
-    say('')
-    say('  the same at dt %g s: period %.4f s, decay rate %.3f 1/s'
-        % (dt/2, r['period'], r['rate']))
-
     text = '\n'.join(lines)
     print(text)
     if results:
@@ -355,11 +359,13 @@ def main():
             f.write('# bench/sphereHeaveDecay/linear.py %s\n' % results)
             f.write(text + '\n')
     if results and len(sys.argv) > 2:
-        plot(sys.argv[2], results, red, dt, k)
+        plot(sys.argv[2], results, red, dt, k,
+             (linear['period'], linear['rate']))
 
 
-def plot(png, results, red, dt, k):
-    """PNG: period and decay rate against the drop."""
+def plot(png, results, red, dt, k, linear):
+    """PNG: period and decay rate against the drop; LINEAR: the linear
+    model's (period, decay rate), the same at every drop."""
     curve = png + '.curve'
     with open(curve, 'w') as f:
         for i in range(1, 31):
@@ -367,9 +373,6 @@ def plot(png, results, red, dt, k):
             t, z = cummins(drop, dt, k, 6.0, exact=True)
             r = red.reduce(t, z)
             f.write('%g %g %g\n' % (1e3*drop, r['period'], r['rate']))
-    t, z = cummins(0.02916, dt, k, 6.0)
-    r = red.reduce(t, z)
-    linear = (r['period'], r['rate'])
     points, fine = png + '.cfd', png + '.fine'
     for path, names in ((points, [n for n, d in DROPS]),
                         (fine, ['fine'])):
