@@ -464,6 +464,37 @@ void Foam::RBD::rigidBodyDriver::reportCoupling()
 }
 
 
+void Foam::RBD::rigidBodyDriver::reportFloors() const
+{
+    if (!externalForces_)
+    {
+        return;
+    }
+
+    Info<< "rigidBodyMotion: coupling residual's floors (below them a body"
+        << " counts as at rest):" << nl;
+    forAll(names_, bi)
+    {
+        for (const label i : dofs_[bi])
+        {
+            Info<< "    " << dofName(i).c_str() << ' '
+                << residual_.floors()[i];
+            if (residual_.rotation(i))
+            {
+                Info<< " rad/s^2 (radius of gyration "
+                    << residual_.gyrations()[i] << " m)";
+            }
+            else
+            {
+                Info<< " m/s^2";
+            }
+            Info<< nl;
+        }
+    }
+    Info<< endl;
+}
+
+
 Foam::string Foam::RBD::rigidBodyDriver::dofName(const label i) const
 {
     // The body (not a jointBody of its composite joint) that the degree of
@@ -672,7 +703,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     externalForces_(externalForces),
     tableEveryStep_(true),
     curTimeIndex_(-1),
-    residual_(coeffs, motion_.model()),
+    residual_(coeffs, motion_.model(), externalForces),
     nCalls_(0),
     names_(coeffs.subDict("bodies").toc()),
     bodyIDs_(names_.size()),
@@ -716,6 +747,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 
     // The motion's amplitudes for the coupling's residual, if written
     residual_.readAmplitudes(stateDict);
+    reportFloors();
 
     // A state that does not say when it is starts at the case's start time
     if (!coeffs.found("t") && !stateDict.found("t"))

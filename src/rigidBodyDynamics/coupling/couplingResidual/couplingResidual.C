@@ -33,15 +33,51 @@ Foam::boolList rotations(const Foam::RBD::rigidBodyModel& model)
     return rotation;
 }
 
-//- A non-negative entry, def if absent
-Foam::scalar readOrDefault
+//- The radius of gyration of what each rotational degree of freedom moves,
+//  about its axis, in the model's own configuration (q = 0, the same on a
+//  restart): sqrt(H_ii/m_i), H the joint-space mass matrix and m_i the mass of the joint's body and its descendants (1 for
+//  translations, and for a rotation that moves no mass)
+Foam::scalarField gyrationRadii
 (
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar def
+    const Foam::RBD::rigidBodyModel& model,
+    const Foam::boolList& rotation
 )
 {
-    return dict.found(key) ? Foam::RBD::readNonNegative(dict, key) : def;
+    using namespace Foam;
+
+    const label nb = model.nBodies();
+
+    // Mass carried by each body's joint: its own and its descendants'
+    scalarField carried(nb, Zero);
+    for (label i = nb - 1; i > 0; --i)
+    {
+        carried[i] += model.bodies()[i].m();
+        if (model.lambda()[i] > 0)
+        {
+            carried[model.lambda()[i]] += carried[i];
+        }
+    }
+
+    RBD::rigidBodyModelState s(model.nDoF());
+    RBD::rigidBodyModelWorkspace ws(model);
+    scalarSquareMatrix H(model.nDoF(), Zero);
+    model.massMatrix(s, ws, H);
+
+    scalarField r(model.nDoF(), 1.0);
+    for (label i = 1; i < nb; ++i)
+    {
+        const RBD::joint& J = model.joints()[i];
+        for (label k = 0; k < J.nDoF(); ++k)
+        {
+            const label dof = J.qIndex() + k;
+            if (rotation[dof] && carried[i] > 0 && H(dof, dof) > 0)
+            {
+                r[dof] = Foam::sqrt(H(dof, dof)/carried[i]);
+            }
+        }
+    }
+
+    return r;
 }
 
 } // End anonymous namespace
@@ -52,13 +88,18 @@ Foam::scalar readOrDefault
 Foam::RBD::couplingResidual::couplingResidual
 (
     const dictionary& dict,
-    const rigidBodyModel& model
+    const rigidBodyModel& model,
+    const bool coupled
 )
 :
     tolerance_(0.1),
-    floor_(0.1),
-    floorRotation_(0.1),
     rotation_(rotations(model)),
+    floorFraction_(0.01),
+    floorAcceleration_(0),
+    gyration_(gyrationRadii(model, rotation_)),
+    floor_(model.nDoF(), Zero),
+    g_(mag(model.g())),
+    coupled_(coupled),
     peak_(model.nDoF(), Zero),
     peakPrev_(model.nDoF(), Zero),
     sign_(model.nDoF(), Zero),
@@ -82,8 +123,55 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
     tolerance_ = dict.found("couplingTolerance")
         ? readPositive(dict, "couplingTolerance")
         : 0.1;
-    floor_ = readOrDefault(dict, "couplingFloor", 0.1);
-    floorRotation_ = readOrDefault(dict, "couplingFloorRotation", 0.1);
+
+    for (const word key : {"couplingFloor", "couplingFloorRotation"})
+    {
+        if (dict.found(key))
+        {
+            FatalIOErrorInFunction(dict.lookup(key))
+                << "Entry " << key << " in " << dict.dictName()
+                << " is no longer read: an absolute floor is right at one"
+                << " scale only." << nl
+                << "    The floors now come from the model:"
+                << " couplingFloorFraction |g| (translations) and"
+                << " couplingFloorFraction |g|/r (rotations, r the radius of"
+                << " gyration about the joint's axis)." << nl
+                << "    Remove " << key << ", or give couplingFloorFraction"
+                << " (default 0.01); see docs/coupling.md" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    floorFraction_ = dict.found("couplingFloorFraction")
+        ? readNonNegative(dict, "couplingFloorFraction")
+        : 0.01;
+
+    // The translation floor: a fraction of g, or given if there is no g
+    scalar floor = floorFraction_*g_;
+    if (g_ < VSMALL)
+    {
+        if (dict.found("couplingFloorAcceleration"))
+        {
+            floorAcceleration_ =
+                readNonNegative(dict, "couplingFloorAcceleration");
+            floor = floorAcceleration_;
+        }
+        else if (coupled_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "g is zero, so the coupling residual's floor has no"
+                << " scale: give couplingFloorAcceleration [m/s^2] in "
+                << dict.dictName() << ", the amplitude of translational"
+                << " acceleration below which a body counts as at rest"
+                << " (with gravity it is couplingFloorFraction |g|)" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    forAll(floor_, i)
+    {
+        floor_[i] = rotation_[i] ? floor/gyration_[i] : floor;
+    }
 }
 
 
@@ -98,7 +186,7 @@ void Foam::RBD::couplingResidual::measure
         const scalar scale = max
         (
             max(peak_[i], peakPrev_[i]),
-            max(mag(a[i]), rotation_[i] ? floorRotation_ : floor_)
+            max(mag(a[i]), floor_[i])
         );
         residual_[i] = mag(d[i])/max(scale, VSMALL);
     }
