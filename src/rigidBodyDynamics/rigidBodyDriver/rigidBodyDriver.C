@@ -2,6 +2,7 @@
 #include "IOdictionary.H"
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -12,6 +13,24 @@ namespace RBD
     defineTypeNameAndDebug(rigidBodyDriver, 0);
 }
 }
+
+addRigidBodyCommonKeywords(coefficients, Driver, "report", "startFromDictionary");
+
+// What the mesh motion (rigidBodyMeshMotion) reads from the same
+// dictionaries; rigidBodySim, which dry-runs a dynamicMeshDict, knows them
+// too.  With the coefficients at the dynamicMeshDict's top level (no
+// rigidBodyMotionCoeffs), that level's entries are OpenFOAM's
+addRigidBodyKeywords
+(
+    meshMotion, coefficients, "test", "rho", "rhoInf", "dynamicFvMesh",
+    "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs", "updateControl",
+    "updateInterval"
+);
+addRigidBodyKeywords
+(
+    meshMotion, body, "patches", "innerDistance", "outerDistance",
+    "translationDirection", "translationOuterDistance"
+);
 
 
 // * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -94,6 +113,9 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
     const bool externalForces
 )
 {
+    // OpenFOAM's sixDoFRigidBodyMotion's coefficients, or a misspelling
+    checkHasBodies(coeffs);
+
     dictionary dict(coeffs);
 
     // A fluid's added mass makes the stock scheme diverge for light bodies
@@ -119,6 +141,9 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
             dict.add("g", uniformDimensionedVectorField(gIO).value());
         }
     }
+
+    // A misspelt entry stops the run; other entries not read are listed
+    checkMotionEntries(dict);
 
     return dict;
 }

@@ -1,4 +1,5 @@
 #include "rigidBodyModel.H"
+#include "keywordTable.H"
 #include "masslessBody.H"
 #include "jointBody.H"
 #include "compositeBody.H"
@@ -10,6 +11,11 @@ namespace Foam
 namespace RBD
 {
     defineTypeNameAndDebug(rigidBodyModel, 0);
+    addRigidBodyCommonKeywords(coefficients, Model, "bodies", "g");
+    addRigidBodyCommonKeywords
+    (
+        body, Body, "type", "parent", "mergeWith", "transform", "joint"
+    );
 }
 }
 

@@ -2,6 +2,15 @@
 #include "rigidBodyEntries.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
+#include "keywordTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+addRigidBodyCommonKeywords
+(
+    coefficients, Motion, "restraints", "solver", "nIter", "ramp", "rampCoeffs"
+);
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

@@ -1,6 +1,7 @@
 #include "cuboid.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -8,6 +9,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(cuboid, 0);
     addToRunTimeSelectionTable(rigidBody, cuboid, dictionary);
+    addRigidBodyKeywords(body, cuboid, "L", "mass", "centreOfMass");
 }
 }
 

@@ -1,5 +1,6 @@
 #include "jointBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -7,6 +8,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(jointBody, 0);
     addToRunTimeSelectionTable(rigidBody, jointBody, dictionary);
+    addRigidBodyKeywords(body, jointBody);
 }
 }
 

@@ -1,5 +1,6 @@
 #include "masslessBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -7,6 +8,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(masslessBody, 0);
     addToRunTimeSelectionTable(rigidBody, masslessBody, dictionary);
+    addRigidBodyKeywords(body, masslessBody);
 }
 }
 

@@ -1,5 +1,6 @@
 #include "rigidBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -10,6 +11,7 @@ namespace RBD
     defineTypeNameAndDebug(rigidBody, 0);
     defineRunTimeSelectionTable(rigidBody, dictionary);
     addToRunTimeSelectionTable(rigidBody, rigidBody, dictionary);
+    addRigidBodyKeywords(body, rigidBody, "mass", "centreOfMass", "inertia");
 }
 }
 

@@ -1,6 +1,7 @@
 #include "sphere.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -8,6 +9,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(sphere, 0);
     addToRunTimeSelectionTable(rigidBody, sphere, dictionary);
+    addRigidBodyKeywords(body, sphere, "radius", "mass", "centreOfMass");
 }
 }
 

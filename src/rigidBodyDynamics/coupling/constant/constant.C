@@ -1,5 +1,6 @@
 #include "constant.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -11,6 +12,7 @@ namespace couplingSchemes
 {
     defineTypeNameAndDebug(constant, 0);
     addToRunTimeSelectionTable(couplingScheme, constant, dictionary);
+    addRigidBodyKeywords(coupling, constant);
 }
 }
 }

@@ -1,86 +1,16 @@
 #include "couplingResidual.H"
 #include "rigidBodyEntries.H"
+#include "couplingScales.H"
+#include "keywordTable.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace
-{
-
-//- Whether each degree of freedom of the model turns its body: its motion
-//  subspace column has an angular part (at q = 0)
-Foam::boolList rotations(const Foam::RBD::rigidBodyModel& model)
-{
-    using namespace Foam;
-
-    boolList rotation(model.nDoF(), false);
-    const scalarField q(model.nDoF(), Zero);
-    const scalarField qDot(model.nDoF(), Zero);
-
-    for (const RBD::joint& J : model.joints())
-    {
-        if (J.nDoF() == 0)
-        {
-            continue;
-        }
-        RBD::joint::XSvc xsvc;
-        J.jcalc(xsvc, q, qDot);
-        for (label k = 0; k < J.nDoF(); ++k)
-        {
-            rotation[J.qIndex() + k] = mag(xsvc.S[k].w()) > SMALL;
-        }
-    }
-
-    return rotation;
-}
-
-//- The radius of gyration of what each rotational degree of freedom moves,
-//  about its axis, in the model's own configuration (q = 0, the same on a
-//  restart): sqrt(H_ii/m_i), H the joint-space mass matrix and m_i the mass of the joint's body and its descendants (1 for
-//  translations, and for a rotation that moves no mass)
-Foam::scalarField gyrationRadii
+// The old absolute floors are read to say that they are no longer used
+addRigidBodyCommonKeywords
 (
-    const Foam::RBD::rigidBodyModel& model,
-    const Foam::boolList& rotation
-)
-{
-    using namespace Foam;
-
-    const label nb = model.nBodies();
-
-    // Mass carried by each body's joint: its own and its descendants'
-    scalarField carried(nb, Zero);
-    for (label i = nb - 1; i > 0; --i)
-    {
-        carried[i] += model.bodies()[i].m();
-        if (model.lambda()[i] > 0)
-        {
-            carried[model.lambda()[i]] += carried[i];
-        }
-    }
-
-    RBD::rigidBodyModelState s(model.nDoF());
-    RBD::rigidBodyModelWorkspace ws(model);
-    scalarSquareMatrix H(model.nDoF(), Zero);
-    model.massMatrix(s, ws, H);
-
-    scalarField r(model.nDoF(), 1.0);
-    for (label i = 1; i < nb; ++i)
-    {
-        const RBD::joint& J = model.joints()[i];
-        for (label k = 0; k < J.nDoF(); ++k)
-        {
-            const label dof = J.qIndex() + k;
-            if (rotation[dof] && carried[i] > 0 && H(dof, dof) > 0)
-            {
-                r[dof] = Foam::sqrt(H(dof, dof)/carried[i]);
-            }
-        }
-    }
-
-    return r;
-}
-
-} // End anonymous namespace
+    coefficients, Residual, "couplingTolerance", "couplingFloorFraction",
+    "couplingFloorAcceleration", "couplingFloor", "couplingFloorRotation"
+);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -93,10 +23,10 @@ Foam::RBD::couplingResidual::couplingResidual
 )
 :
     tolerance_(0.1),
-    rotation_(rotations(model)),
+    rotation_(rotationDoFs(model)),
     floorFraction_(0.01),
     floorAcceleration_(0),
-    gyration_(gyrationRadii(model, rotation_)),
+    gyration_(dofLengths(model)),
     floor_(model.nDoF(), Zero),
     g_(mag(model.g())),
     coupled_(coupled),

@@ -1,4 +1,6 @@
 #include "couplingScheme.H"
+#include "keywordTable.H"
+#include "couplingScales.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -8,6 +10,11 @@ namespace RBD
 {
     defineTypeNameAndDebug(couplingScheme, 0);
     defineRunTimeSelectionTable(couplingScheme, dictionary);
+    addRigidBodyCommonKeywords
+    (
+        coupling, Coupling, "accelerationRelaxationType", "accelerationRelaxation",
+        "accelerationDamping"
+    );
 }
 }
 
@@ -44,6 +51,8 @@ Foam::RBD::couplingScheme::couplingScheme
     model_(model),
     relaxation_(readFactor(dict, "accelerationRelaxation")),
     damping_(readFactor(dict, "accelerationDamping")),
+    length_(dofLengths(model)),
+    weight_(sqr(length_)),
     distance_(model.nDoF(), Zero)
 {}
 

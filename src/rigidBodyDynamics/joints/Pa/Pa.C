@@ -1,6 +1,7 @@
 #include "Pa.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -10,6 +11,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pa, 0);
     addToRunTimeSelectionTable(joint, Pa, dictionary);
+    addRigidBodyKeywords(joint, Pa, "axis");
 }
 }
 }

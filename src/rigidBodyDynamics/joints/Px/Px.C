@@ -1,5 +1,6 @@
 #include "Px.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Px, 0);
     addToRunTimeSelectionTable(joint, Px, dictionary);
+    addRigidBodyKeywords(joint, Px);
 }
 }
 }

@@ -1,5 +1,6 @@
 #include "Pxyz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pxyz, 0);
     addToRunTimeSelectionTable(joint, Pxyz, dictionary);
+    addRigidBodyKeywords(joint, Pxyz);
 }
 }
 }

@@ -1,5 +1,6 @@
 #include "Py.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Py, 0);
     addToRunTimeSelectionTable(joint, Py, dictionary);
+    addRigidBodyKeywords(joint, Py);
 }
 }
 }

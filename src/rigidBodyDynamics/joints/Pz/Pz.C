@@ -1,5 +1,6 @@
 #include "Pz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pz, 0);
     addToRunTimeSelectionTable(joint, Pz, dictionary);
+    addRigidBodyKeywords(joint, Pz);
 }
 }
 }

@@ -1,6 +1,7 @@
 #include "Ra.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -10,6 +11,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ra, 0);
     addToRunTimeSelectionTable(joint, Ra, dictionary);
+    addRigidBodyKeywords(joint, Ra, "axis");
 }
 }
 }

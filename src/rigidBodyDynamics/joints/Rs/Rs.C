@@ -1,5 +1,6 @@
 #include "Rs.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rs, 0);
     addToRunTimeSelectionTable(joint, Rs, dictionary);
+    addRigidBodyKeywords(joint, Rs);
 }
 }
 }

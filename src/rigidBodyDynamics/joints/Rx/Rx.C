@@ -1,5 +1,6 @@
 #include "Rx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rx, 0);
     addToRunTimeSelectionTable(joint, Rx, dictionary);
+    addRigidBodyKeywords(joint, Rx);
 }
 }
 }

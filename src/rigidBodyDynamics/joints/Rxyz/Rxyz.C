@@ -1,5 +1,6 @@
 #include "Rxyz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rxyz, 0);
     addToRunTimeSelectionTable(joint, Rxyz, dictionary);
+    addRigidBodyKeywords(joint, Rxyz);
 }
 }
 }

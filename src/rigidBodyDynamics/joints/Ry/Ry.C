@@ -1,5 +1,6 @@
 #include "Ry.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ry, 0);
     addToRunTimeSelectionTable(joint, Ry, dictionary);
+    addRigidBodyKeywords(joint, Ry);
 }
 }
 }

@@ -1,5 +1,6 @@
 #include "Ryxz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ryxz, 0);
     addToRunTimeSelectionTable(joint, Ryxz, dictionary);
+    addRigidBodyKeywords(joint, Ryxz);
 }
 }
 }

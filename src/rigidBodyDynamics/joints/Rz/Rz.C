@@ -1,5 +1,6 @@
 #include "Rz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rz, 0);
     addToRunTimeSelectionTable(joint, Rz, dictionary);
+    addRigidBodyKeywords(joint, Rz);
 }
 }
 }

@@ -1,5 +1,6 @@
 #include "Rzyx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rzyx, 0);
     addToRunTimeSelectionTable(joint, Rzyx, dictionary);
+    addRigidBodyKeywords(joint, Rzyx);
 }
 }
 }

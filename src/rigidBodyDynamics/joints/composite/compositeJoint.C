@@ -1,5 +1,6 @@
 #include "compositeJoint.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(composite, 0);
     addToRunTimeSelectionTable(joint, composite, dictionary);
+    addRigidBodyKeywords(joint, composite, "joints");
 }
 }
 }

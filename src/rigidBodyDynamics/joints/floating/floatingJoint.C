@@ -2,6 +2,7 @@
 #include "Pxyz.H"
 #include "Rzyx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -11,6 +12,7 @@ namespace joints
 {
     defineTypeNameAndDebug(floating, 0);
     addToRunTimeSelectionTable(joint, floating, dictionary);
+    addRigidBodyKeywords(joint, floating);
 }
 }
 }

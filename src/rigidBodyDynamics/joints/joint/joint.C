@@ -1,4 +1,5 @@
 #include "joint.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -6,6 +7,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(joint, 0);
     defineRunTimeSelectionTable(joint, dictionary);
+    addRigidBodyCommonKeywords(joint, Joint, "type");
 }
 }
 

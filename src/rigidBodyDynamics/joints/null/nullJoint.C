@@ -1,5 +1,6 @@
 #include "nullJoint.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace joints
 {
     defineTypeNameAndDebug(null, 0);
     addToRunTimeSelectionTable(joint, null, dictionary);
+    addRigidBodyKeywords(joint, null);
 }
 }
 }

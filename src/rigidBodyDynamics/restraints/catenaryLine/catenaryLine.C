@@ -6,6 +6,7 @@
 #include "rigidBodyModel.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "unitConversion.H"
 #include "vtkPolyline.H"
 #include "Switch.H"
@@ -25,6 +26,11 @@ namespace restraints
         restraint,
         catenaryLine,
         dictionary
+    );
+    addRigidBodyKeywords
+    (
+        restraint, catenaryLine, "length", "wetWeight", "EA", "seabedFriction",
+        "writeShape", "nShapePoints", "anchor", "refAttachmentPt", "seabed"
     );
 }
 }

@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -11,6 +12,10 @@ namespace restraints
 {
     defineTypeNameAndDebug(externalForce, 0);
     addToRunTimeSelectionTable(restraint, externalForce, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, externalForce, "location", "force", "forceCoeffs"
+    );
 }
 }
 }

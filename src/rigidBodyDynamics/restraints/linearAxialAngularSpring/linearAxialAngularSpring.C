@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -12,6 +13,11 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearAxialAngularSpring, 0);
     addToRunTimeSelectionTable(restraint, linearAxialAngularSpring, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, linearAxialAngularSpring, "referenceOrientation", "axis",
+        "stiffness", "damping"
+    );
 }
 }
 }

@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -11,6 +12,7 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearDamper, 0);
     addToRunTimeSelectionTable(restraint, linearDamper, dictionary);
+    addRigidBodyKeywords(restraint, linearDamper, "coeff");
 }
 }
 }

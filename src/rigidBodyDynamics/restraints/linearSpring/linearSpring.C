@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -12,6 +13,11 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearSpring, 0);
     addToRunTimeSelectionTable(restraint, linearSpring, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, linearSpring, "anchor", "refAttachmentPt", "stiffness",
+        "damping", "restLength"
+    );
 }
 }
 }

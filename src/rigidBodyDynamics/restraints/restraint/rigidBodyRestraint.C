@@ -1,4 +1,5 @@
 #include "rigidBodyRestraint.H"
+#include "keywordTable.H"
 #include "rigidBodyModel.H"
 
 namespace Foam
@@ -7,6 +8,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(restraint, 0);
     defineRunTimeSelectionTable(restraint, dictionary);
+    addRigidBodyCommonKeywords(restraint, Restraint, "type", "body");
 }
 }
 

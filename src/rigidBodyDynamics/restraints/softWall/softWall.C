@@ -3,6 +3,7 @@
 #include "rigidBodyModel.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -12,6 +13,11 @@ namespace restraints
 {
     defineTypeNameAndDebug(softWall, 0);
     addToRunTimeSelectionTable(restraint, softWall, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, softWall, "anchor", "wallNormal", "refAttachmentPt", "C",
+        "psi"
+    );
 }
 }
 }

@@ -2,6 +2,7 @@
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -11,6 +12,7 @@ namespace restraints
 {
     defineTypeNameAndDebug(sphericalAngularDamper, 0);
     addToRunTimeSelectionTable(restraint, sphericalAngularDamper, dictionary);
+    addRigidBodyKeywords(restraint, sphericalAngularDamper, "coeff");
 }
 }
 }

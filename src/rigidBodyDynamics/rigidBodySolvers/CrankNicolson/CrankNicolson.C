@@ -1,5 +1,6 @@
 #include "CrankNicolson.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(CrankNicolson, 0);
     addToRunTimeSelectionTable(rigidBodySolver, CrankNicolson, dictionary);
+    addRigidBodyKeywords(solver, CrankNicolson, "aoc", "voc");
 }
 }
 }

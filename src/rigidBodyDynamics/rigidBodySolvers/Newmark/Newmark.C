@@ -1,5 +1,6 @@
 #include "Newmark.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(Newmark, 0);
     addToRunTimeSelectionTable(rigidBodySolver, Newmark, dictionary);
+    addRigidBodyKeywords(solver, Newmark, "gamma", "beta");
 }
 }
 }

@@ -1,5 +1,6 @@
 #include "RK4.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(RK4, 0);
     addToRunTimeSelectionTable(rigidBodySolver, RK4, dictionary);
+    addRigidBodyKeywords(solver, RK4);
 }
 }
 }

@@ -1,4 +1,5 @@
 #include "rigidBodySolver.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -8,6 +9,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(rigidBodySolver, 0);
     defineRunTimeSelectionTable(rigidBodySolver, dictionary);
+    addRigidBodyCommonKeywords(solver, Solver, "type");
 }
 }
 

@@ -1,5 +1,6 @@
 #include "symplectic.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -9,6 +10,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(symplectic, 0);
     addToRunTimeSelectionTable(rigidBodySolver, symplectic, dictionary);
+    addRigidBodyKeywords(solver, symplectic);
 }
 }
 }
