@@ -306,7 +306,7 @@ set label 3 "OES Task 10 RANS codes at 0.1 D, T1 by the public reduction: 0.14-0
 set arrow 1 from 30,0.19 to 1e8,0.19 nohead dt 2
 set label 2 "their 2D wedge, 20,000 cells, one laptop core (its time not given): period 0.19%%" at 1e8,0.13 right font ",9"
 %s
-plot "%s" using 1:2 with points pt 7 ps 1.5 title "period (this library)", \\
+plot "%s" using 1:2 with points pt 7 ps 1.5 title "T1 (this library)", \\
      "" using 1:3 with points pt 5 ps 1.5 title "decay rate (this library)"
 ''' % (png, '\n'.join(labels), data)
     subprocess.run(['gnuplot'], input=script, text=True, check=True)
