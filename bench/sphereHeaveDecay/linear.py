@@ -41,10 +41,11 @@ gnuplot; about 10 s.
 --check: the model's own checks, each with its tolerance, exit status 1
 if one fails (test/regression/sphereHeaveDecay): with no radiation the
 time-domain model is an undamped oscillator of period
-2 pi sqrt((m + A_inf)/C), which the reduction must give within 0.01%,
+2 pi sqrt((m + A_inf)/C), which the reduction's first cycle must give
+within 0.01%,
 its amplitude kept within 0.1% over 6 s;
 the kernel must give back Hulme's added mass within 0.01 (Ogilvie); and
-halving the time step must move the first period by under 0.05%.
+halving the time step must move T1 by under 0.05%.
 """
 import importlib.machinery
 import importlib.util
@@ -78,8 +79,8 @@ HULME = [
 MU_INF = 0.5
 
 # The experiment's figures (the tutorial's ./results): release [m],
-# first damped period [s], decay rate [1/s]
-EXPERIMENT = [(0.02916, 0.7869, 0.831), (0.08918, 0.8093, 0.801)]
+# first damped period T1 [s], decay rate [1/s]
+EXPERIMENT = [(0.02916, 0.7869, 0.8310), (0.08918, 0.8093, 0.8014)]
 
 # The drops compared: the CFD records' names and releases [m] (the 6 mm
 # drop's record with the water filled as the tutorial now fills it)
@@ -258,10 +259,14 @@ def self_check(red):
     t, z = cummins(0.02916, dt, [], 6.0)
     r = red.reduce(t, z)
     last = max(abs(v) for v, u in zip(z, t) if u > t[-1] - exact)
-    ok &= say('no radiation: period %.5f s against the exact %.5f s '
+    # The full cycle (first to third crossing), not T1: the undamped
+    # motion never settles, so the mean of its last 2 s (the reduction's
+    # equilibrium) is off the true one, which moves each half-period
+    # but not the cycle
+    ok &= say('no radiation: first cycle %.5f s against the exact %.5f s '
               '(within 0.01%%); the last period\'s amplitude %.4f of the '
-              'drop (within 0.1%%)' % (r['period'], exact, last/0.02916),
-              abs(r['period']/exact - 1) < 1e-4
+              'drop (within 0.1%%)' % (r['cycle'], exact, last/0.02916),
+              abs(r['cycle']/exact - 1) < 1e-4
               and abs(last/0.02916 - 1) < 1e-3)
 
     k = kernel_steps(dt)
@@ -276,7 +281,7 @@ def self_check(red):
     k2 = kernel_steps(dt/2)
     t, z = cummins(0.02916, dt/2, k2, 6.0)
     p2 = red.reduce(t, z)['period']
-    ok &= say('the first period at dt %g and %g s: %.5f and %.5f s '
+    ok &= say('T1 at dt %g and %g s: %.5f and %.5f s '
               '(within 0.05%%)' % (dt, dt/2, p1, p2),
               abs(p1/p2 - 1) < 5e-4)
     return ok
@@ -312,7 +317,7 @@ def main():
                  'mass within 0.01: K(t) is wrong')
 
     say('')
-    say('| drop | model | first damped period [s] | decay rate [1/s] | '
+    say('| drop | model | T1 [s] | decay rate [1/s] | '
         'first extreme [mm] |')
     say('|---|---|---|---|---|')
     # The linear model once (its heave scales with the drop), the one with
@@ -348,7 +353,7 @@ def main():
     for drop in (0.02916, 0.08918):
         t, z = cummins(drop, dt, k, 6.0, exact=True, extra=0.4)
         r = red.reduce(t, z)
-        say('  exact hydrostatics and 0.4 kg more inertia, %.2f mm: period '
+        say('  exact hydrostatics and 0.4 kg more inertia, %.2f mm: T1 '
             '%.4f s, decay rate %.3f 1/s' % (1e3*drop, r['period'],
                                            r['rate']))
 
@@ -395,7 +400,7 @@ set grid
 set xrange [0:155]
 set key left top
 set xlabel "drop [mm]"
-set ylabel "first damped period [s]"
+set ylabel "first damped period T1 [s]"
 plot "%(curve)s" using 1:2 with lines lw 2 title "linear potential flow (Hulme 1982), exact hydrostatics", \\
      %(tl)r with lines dt 2 lc rgb "gray40" title "linear potential flow, linear hydrostatics", \\
      "%(points)s" using 1:2 with points pt 7 ps 1.6 title "interFoam + this library (default mesh)", \\

@@ -74,7 +74,7 @@ below it (interpolated log-log along each of our solvers' curves between
 the two runs that bracket it; our coarsest run if already below); the
 stock run's cost divided by that.  Writes one PNG per problem,
 DIR/workPrecision-PROBLEM.png, and the tables (markdown) into the
-workPrecision section of DIR/performance.md (DIR: docs unless -o).
+workPrecision section of DIR/README.md (DIR: bench unless -o).
 """
 
 import datetime
@@ -609,7 +609,7 @@ def main():
             plot(problem, curves, os.path.join(
                 outDir, 'workPrecision-%s.png' % problem.name), tmp)
 
-        splice(os.path.join(outDir, 'performance.md'), 'workPrecision',
+        splice(os.path.join(outDir, 'README.md'), 'workPrecision',
                ['Made with `bench/workPrecision/run%s` on %s.'
                 % (' -quick' if quick else '',
                    datetime.date.today().isoformat()), '']

@@ -3,7 +3,7 @@ Application
     Test-stiffAndSpin
 
 Description
-    The headline findings of bench/hardCases (docs/stability.md):
+    The headline findings of bench/hardCases (bench/hardCases/README.md):
     - a stiff spring at omega deltaT = 1.3 (4.8 steps a period), undamped,
       over 50 periods: Newmark with nIter 40 is the trapezoidal rule itself
       (its solves converge, the error shrinking by beta (omega deltaT)^2 =
@@ -100,7 +100,7 @@ void stiffSpring()
     // Newmark, nIter 40: the trapezoidal rule, a rotation by
     // theta = 2 atan(omega deltaT/2) a step (with nIter 20 the solves stop
     // 0.42^20 = 3e-8 short of it, and the energy is 1e-5 off after 50
-    // periods: docs/stability.md)
+    // periods: bench/hardCases/README.md)
     {
         autoPtr<RBD::rigidBodyMotion> motion =
             test::motion(springText("type Newmark;", 40));

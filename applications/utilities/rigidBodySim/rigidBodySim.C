@@ -162,8 +162,14 @@ int main(int argc, char *argv[])
 
     const RBD::rigidBodyModel& model = driver.model();
 
-    const label nBodies = model.bodyNames().size() - 1;
-    const label nMerged = nBodies - (model.nBodies() - 1);
+    // The bodies named in bodies: the tree's own (not the massless bodies
+    // a composite joint is expanded into) and the merged ones
+    const label nBodies = driver.bodyIDs().size();
+    label nMerged = 0;
+    for (const label id : driver.bodyIDs())
+    {
+        nMerged += RBD::rigidBodyModel::isMerged(id);
+    }
     Info<< "Model: " << countOf(nBodies, "body", "bodies").c_str();
     if (nMerged)
     {
