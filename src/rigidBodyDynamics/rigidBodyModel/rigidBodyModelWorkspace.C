@@ -65,17 +65,18 @@ void Foam::RBD::rigidBodyModelWorkspace::setConstraints
     const label n = nConstraints ? model.nBodies() : 0;
     const label nDoF = nConstraints ? model.nDoF() : 0;
 
-    pR.setSize(n, Zero);
-    uR.setSize(n, Zero);
-    aR.setSize(n, Zero);
-    qDdotR.setSize(nConstraints);
-    for (scalarField& r : qDdotR)
+    responseBias.setSize(n, Zero);
+    responseJointBias.setSize(n, Zero);
+    responseAcceleration.setSize(n, Zero);
+    responseQDdot.setSize(nConstraints);
+    for (scalarField& r : responseQDdot)
     {
         r.setSize(nDoF, Zero);
     }
-    AR.setSize(nConstraints);
-    LR.setSize(nConstraints);
-    bR.setSize(nConstraints, Zero);
+    constraintMatrix.setSize(nConstraints);
+    constraintLU.setSize(nConstraints);
+    constraintPivots.setSize(nConstraints, 0);
+    motorMoments.setSize(nConstraints, Zero);
     tauZero.setSize(nDoF, Zero);
     fxZero.setSize(n, Zero);
     qDdotScratch.setSize(nDoF, Zero);

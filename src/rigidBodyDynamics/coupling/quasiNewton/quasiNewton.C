@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "quasiNewton.H"
+#include "denseLinearAlgebra.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -97,14 +98,7 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
     // Broyden's inverse update from the previous solve of the step
     if (!firstSolve && dr2 > VSMALL)
     {
-        for (label i = 0; i < n; ++i)
-        {
-            JinvDr_[i] = 0;
-            for (label j = 0; j < n; ++j)
-            {
-                JinvDr_[i] += Jinv_(i, j)*dr_[j];
-            }
-        }
+        matrixVector(Jinv_, dr_, JinvDr_);
 
         bool valid = true;
         for (label i = 0; i < n; ++i)
@@ -124,14 +118,10 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
         }
     }
 
-    // a = aGiven - Jinv r
+    // a = aGiven - Jinv r, JinvDr_ the scratch for Jinv r
+    matrixVector(Jinv_, rPrev_, JinvDr_);
     forAll(a, i)
     {
-        scalar Jr = 0;
-        for (label j = 0; j < n; ++j)
-        {
-            Jr += Jinv_(i, j)*rPrev_[j];
-        }
-        a[i] = aGiven[i] - Jr;
+        a[i] = aGiven[i] - JinvDr_[i];
     }
 }

@@ -161,7 +161,9 @@ Foam::RBD::restraints::catenaryLine::catenaryLine
     nShapePoints_(51),
     fairlead_(Zero),
     across_(1, 0, 0),
-    up_(0, 0, 1)
+    up_(0, 0, 1),
+    hasCommitted_(false),
+    committed_(line_)
 {
     read(dict);
 }
@@ -189,6 +191,52 @@ void Foam::RBD::restraints::catenaryLine::restrain
 {
     fairlead_ = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
     addForce(fx, fairlead_, solve(line_, fairlead_, across_));
+
+    // The first evaluation makes the initial committed state
+    if (!hasCommitted_)
+    {
+        commitLatest();
+    }
+}
+
+
+void Foam::RBD::restraints::catenaryLine::commitLatest() const
+{
+    committed_ = line_;
+    hasCommitted_ = true;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::commit
+(
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    // The latest solve is the committed one if it was for this fairlead;
+    // else the line is solved for it from there (the trial left as it is)
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    if (p == fairlead_)
+    {
+        commitLatest();
+        return;
+    }
+    committed_ = line_;
+    vector across(across_);
+    solve(committed_, p, across);
+    hasCommitted_ = true;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::describe
+(
+    const rigidBodyModelWorkspace& ws,
+    restraintReport& report
+) const
+{
+    report.anchor = anchor_;
+    report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
+    report.line.reset(new elasticCatenary(line_));
 }
 
 
@@ -204,26 +252,15 @@ Foam::tensor Foam::RBD::restraints::catenaryLine::forceGradient() const
 }
 
 
-Foam::wordList Foam::RBD::restraints::catenaryLine::tableColumns() const
+void Foam::RBD::restraints::catenaryLine::addColumns(tableRow& row) const
 {
-    return wordList
-    {
-        name_ + ".tension",
-        name_ + ".groundedLength",
-        name_ + ".fairleadAngle"
-    };
-}
-
-
-void Foam::RBD::restraints::catenaryLine::tableValues
-(
-    scalarField& row,
-    label& k
-) const
-{
-    row[k++] = line_.tension();
-    row[k++] = line_.groundedLength();
-    row[k++] = radToDeg(atan2(line_.V(), line_.H()));
+    row.add(name_ + ".tension", committed_.tension());
+    row.add(name_ + ".groundedLength", committed_.groundedLength());
+    row.add
+    (
+        name_ + ".fairleadAngle",
+        radToDeg(atan2(committed_.V(), committed_.H()))
+    );
 }
 
 

@@ -112,7 +112,9 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     anchor_(Zero),
     refAttachmentPt_(Zero),
     props_(),
-    writeShape_(true)
+    writeShape_(true),
+    committedTension_(0),
+    committedAnchorTension_(0)
 {
     read(dict);
 }
@@ -129,7 +131,9 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     props_(l.props_),
     writeShape_(l.writeShape_),
     line_(l.line_ ? new lumpedLine(*l.line_) : nullptr),
-    pendingState_(l.pendingState_)
+    pendingState_(l.pendingState_),
+    committedTension_(l.committedTension_),
+    committedAnchorTension_(l.committedAnchorTension_)
 {}
 
 
@@ -150,7 +154,7 @@ void Foam::RBD::restraints::lumpedMassLine::restrain
 }
 
 
-void Foam::RBD::restraints::lumpedMassLine::newTime
+void Foam::RBD::restraints::lumpedMassLine::commit
 (
     const rigidBodyModelState& state,
     const rigidBodyModelWorkspace& ws
@@ -160,6 +164,42 @@ void Foam::RBD::restraints::lumpedMassLine::newTime
     lumpedLine& l = line(state.t(), p, ws);
     l.advance(state.t(), p);
     l.commit();
+    committedTension_ = l.tension(props_.N - 1);
+    committedAnchorTension_ = l.tension(0);
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::describe
+(
+    const rigidBodyModelWorkspace& ws,
+    restraintReport& report
+) const
+{
+    using constant::mathematical::pi;
+    const lumpedLine::properties& p = props_;
+    const vector up(mag(p.g) > VSMALL ? -p.g/mag(p.g) : vector(0, 0, 1));
+
+    elasticCatenary::properties cp;
+    cp.L = p.L;
+    cp.w = max((p.mu - p.rho*0.25*pi*sqr(p.d))*mag(p.g), scalar(0));
+    cp.EA = p.EA;
+    cp.CB = 0;
+    cp.grounded =
+        p.hasSeabed && mag((anchor_ & up) - p.seabed) <= 1e-6*p.L;
+
+    report.anchor = anchor_;
+    report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
+    report.line.reset(new elasticCatenary(cp));
+
+    // The transverse period at the catenary's tension there
+    elasticCatenary solved(cp);
+    solved.fairleadForce(report.anchor, report.fairlead, up);
+    const scalar A = 0.25*pi*sqr(p.d);
+    const scalar T0 = solved.tension();
+    report.axialPeriod = 2*p.L/sqrt(p.EA/p.mu);
+    report.transversePeriod =
+        T0 > 0 ? 2*p.L/sqrt(T0/(p.mu + p.rho*A*p.Can)) : GREAT;
+    report.maxSubStep = line_ ? line_->maxSubStep() : 0;
 }
 
 
@@ -187,20 +227,10 @@ void Foam::RBD::restraints::lumpedMassLine::readState(const dictionary& dict)
 }
 
 
-Foam::wordList Foam::RBD::restraints::lumpedMassLine::tableColumns() const
+void Foam::RBD::restraints::lumpedMassLine::addColumns(tableRow& row) const
 {
-    return wordList{name_ + ".tension", name_ + ".anchorTension"};
-}
-
-
-void Foam::RBD::restraints::lumpedMassLine::tableValues
-(
-    scalarField& row,
-    label& k
-) const
-{
-    row[k++] = line_ ? line_->tension(props_.N - 1) : 0;
-    row[k++] = line_ ? line_->tension(0) : 0;
+    row.add(name_ + ".tension", committedTension_);
+    row.add(name_ + ".anchorTension", committedAnchorTension_);
 }
 
 

@@ -95,6 +95,36 @@ void Foam::RBD::restraint::prescribe
 }
 
 
+Foam::wordList Foam::RBD::restraint::tableColumns() const
+{
+    tableRow row;
+    row.start();
+    addColumns(row);
+    row.end();
+    return row.names();
+}
+
+
+void Foam::RBD::restraint::tableValues(scalarField& row, label& k) const
+{
+    tableRow r;
+    r.start();
+    addColumns(r);
+    r.end();
+    if (k + r.size() > row.size())
+    {
+        FatalErrorInFunction
+            << "Restraint " << name_ << " has " << r.size() << " columns,"
+            << " but the row has room for " << row.size() - k << nl
+            << abort(FatalError);
+    }
+    for (label c = 0; c < r.size(); ++c)
+    {
+        row[k++] = r[c];
+    }
+}
+
+
 bool Foam::RBD::restraint::read(const dictionary& dict)
 {
     coeffs_ = dict;
