@@ -16,7 +16,10 @@ Mutations: delete an entry; a number replaced by 0, a negative, 1e300,
 name) replaced by a wrong word or a number; a list one element shorter or
 longer; a vector made zero or non-unit; a transform's tensor replaced by
 nine random numbers; a body made its own parent; two bodies each other's
-parent; a body entry written twice; the file truncated at a random place.
+parent; a body entry written twice; the file truncated at a random place;
+a keyword the library reads at that level (its registrations in src/:
+addRigidBodyKeywords) misspelt by one edit (a letter dropped, two swapped,
+a case changed).
 
 Each outcome is one of
     error      a FOAM FATAL (IO) ERROR, no signal or stack trace, naming the
@@ -36,7 +39,10 @@ Each outcome is one of
     hang       killed at the time limit with no progress
     nonFinite  exit status 0 with nan or inf in the log or output
     other      any other exit (no FOAM FATAL message)
-The bad outcomes are signal, hang, nonFinite, other and vague: each is
+    unnoticed  a misspelt keyword whose run did not stop with "did you mean"
+               and the keyword
+The bad outcomes are signal, hang, nonFinite, other, vague and unnoticed:
+each is
 printed with its case number, seed case and mutation.  Prints the counts;
 --summary writes them as a dictionary.  Exit status 0 always (the caller
 judges the counts).
@@ -54,7 +60,7 @@ import tempfile
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
-BAD = ("signal", "hang", "nonFinite", "other", "vague")
+BAD = ("signal", "hang", "nonFinite", "other", "vague", "unnoticed")
 OUTCOMES = ("error", "reader", "completed", "slow") + BAD
 
 NUMBERS = ["0", "-1", "NEG", "1e300", "-1e300", "1e-300", "1e400", "nan",
@@ -284,6 +290,77 @@ def lineOf(text, pos):
 
 # --------------------------------------------------------------- Mutations
 
+def registeredKeywords():
+    """The keywords the library reads, by level: its registrations
+    (addRigidBodyKeywords, addRigidBodyCommonKeywords in src/)."""
+    reg = re.compile(r"addRigidBody(Common)?Keywords\s*\(\s*(\w+)\s*,"
+                     r"\s*(\w*)\s*,?(.*?)\);", re.S)
+    families = {}
+    for d, _, files in os.walk(os.path.join(TOP, "src")):
+        if "lnInclude" in d:
+            continue
+        for f in files:
+            if f.endswith(".C"):
+                with open(os.path.join(d, f)) as fh:
+                    for m in reg.finditer(fh.read()):
+                        family = m.group(2)
+                        if family == "meshMotion":
+                            family = m.group(3)
+                        families.setdefault(family, set()).update(
+                            re.findall(r'"(\w+)"', m.group(4)))
+    return {
+        "coefficients": families.get("coefficients", set())
+        | families.get("coupling", set()),
+        "body": families.get("body", set()),
+        "joint": families.get("joint", set()),
+        "restraint": families.get("restraint", set()),
+        "solver": families.get("solver", set()),
+    }
+
+
+KEYWORDS = registeredKeywords()
+
+
+def level(entry, hasCoeffs):
+    """The level of the motion's dictionaries that holds the entry, or
+    None (outside the motion's coefficients, or not a level checked)"""
+    path = entry.path
+    if hasCoeffs:
+        if "rigidBodyMotionCoeffs" not in path:
+            return None
+        path = path[path.index("rigidBodyMotionCoeffs") + 1:]
+    if not path:
+        return "coefficients"
+    if len(path) == 2 and path[0] == "bodies":
+        return "body"
+    if len(path) == 3 and path[0] == "bodies" and path[2] == "joint":
+        return "joint"
+    if len(path) == 2 and path[0] == "restraints":
+        return "restraint"
+    if path == ["solver"]:
+        return "solver"
+    return None
+
+
+def misspelling(key, rng, known):
+    """One edit of key (a letter dropped, two swapped, a case changed)
+    that is no keyword of its level"""
+    for _ in range(20):
+        i = rng.randrange(len(key))
+        kind = rng.choice(["drop", "swap", "case"])
+        if kind == "drop":
+            new = key[:i] + key[i + 1:]
+        elif kind == "swap" and i + 1 < len(key) and key[i] != key[i + 1]:
+            new = key[:i] + key[i + 1] + key[i] + key[i + 2:]
+        elif kind == "case" and key[i].isalpha():
+            new = key[:i] + key[i].swapcase() + key[i + 1:]
+        else:
+            continue
+        if new not in known and len(new) >= 4:
+            return new
+    return None
+
+
 def mutate(text, rng):
     """One mutation of the dictionary text: (new text, description, words
     that name it, line of the mutation).  None if nothing applies."""
@@ -309,7 +386,16 @@ def mutate(text, rng):
 
     kinds = ["delete", "number", "number", "number", "word", "length",
              "vector", "transform", "selfParent", "cycle", "duplicate",
-             "truncate"]
+             "truncate", "misspell", "misspell"]
+    # Keywords of the motion's dictionaries (a file with bodies), not used
+    # by $ or #eval elsewhere (OpenFOAM's reader would stop first)
+    hasCoeffs = any(e.key == "rigidBodyMotionCoeffs" for e in entries)
+    spellable = []
+    if any(e.key == "bodies" for e in entries):
+        spellable = [(e, level(e, hasCoeffs)) for e in entries]
+        spellable = [(e, l) for e, l in spellable
+                     if l and e.key in KEYWORDS[l] and len(e.key) >= 4
+                     and not re.search(r"\$\{?" + e.key + r"\b", text)]
     for _ in range(20):
         kind = rng.choice(kinds)
 
@@ -402,6 +488,15 @@ def mutate(text, rng):
             return (text[:b.end] + "\n" + block + text[b.end:],
                     "body %s written twice" % b.key, [b.key],
                     lineOf(text, b.start))
+
+        if kind == "misspell" and spellable:
+            e, l = rng.choice(spellable)
+            new = misspelling(e.key, rng, KEYWORDS[l])
+            if new:
+                return (text[:e.start] + new + text[e.start + len(e.key):],
+                        "misspell %s -> %s" % ("/".join(e.path + [e.key]),
+                                               new),
+                        [new, e.key], lineOf(text, e.start))
 
         if kind == "truncate":
             cut = rng.randrange(len(text) // 4, len(text))
@@ -503,6 +598,8 @@ def runCase(case, timeout, stock):
         return "other", "exit status %d, no fatal error: %s" \
             % (rc, log.strip().splitlines()[-1][:100] if log.strip() else "")
     msg = log[fatal.start():]
+    if what.startswith("misspell ") and "did you mean " + names[1] not in msg:
+        return "unnoticed", " ".join(msg.split())[:160]
     lines = re.findall(r"line (\d+)", msg)
     named = any(re.search(r"(?<![\w])" + re.escape(w) + r"(?![\w])", msg)
                 for w in names if w)
@@ -565,6 +662,8 @@ def main():
     if args.summary:
         with open(args.summary, "w") as f:
             f.write("cases %d;\nseed %d;\n" % (len(cases), args.seed))
+            f.write("misspelt %d;\n" % sum(
+                1 for c in cases.values() if c[3].startswith("misspell ")))
             for k in OUTCOMES:
                 f.write("%s %d;\n" % (k, counts[k]))
 

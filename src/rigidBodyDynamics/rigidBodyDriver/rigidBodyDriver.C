@@ -24,6 +24,7 @@ License
 #include "IOdictionary.H"
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,24 @@ namespace RBD
     defineTypeNameAndDebug(rigidBodyDriver, 0);
 }
 }
+
+addRigidBodyCommonKeywords(coefficients, Driver, "report", "startFromDictionary");
+
+// What the mesh motion (rigidBodyMeshMotion) reads from the same
+// dictionaries; rigidBodySim, which dry-runs a dynamicMeshDict, knows them
+// too.  With the coefficients at the dynamicMeshDict's top level (no
+// rigidBodyMotionCoeffs), that level's entries are OpenFOAM's
+addRigidBodyKeywords
+(
+    meshMotion, coefficients, "test", "rho", "rhoInf", "dynamicFvMesh",
+    "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs", "updateControl",
+    "updateInterval"
+);
+addRigidBodyKeywords
+(
+    meshMotion, body, "patches", "innerDistance", "outerDistance",
+    "translationDirection", "translationOuterDistance"
+);
 
 
 // * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -116,6 +135,9 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
     const bool externalForces
 )
 {
+    // OpenFOAM's sixDoFRigidBodyMotion's coefficients, or a misspelling
+    checkHasBodies(coeffs);
+
     dictionary dict(coeffs);
 
     // A fluid's added mass makes the stock scheme diverge for light bodies
@@ -141,6 +163,9 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::motionDict
             dict.add("g", uniformDimensionedVectorField(gIO).value());
         }
     }
+
+    // A misspelt entry stops the run; other entries not read are listed
+    checkMotionEntries(dict);
 
     return dict;
 }
@@ -403,6 +428,37 @@ void Foam::RBD::rigidBodyDriver::reportCoupling()
 }
 
 
+void Foam::RBD::rigidBodyDriver::reportFloors() const
+{
+    if (!externalForces_)
+    {
+        return;
+    }
+
+    Info<< "rigidBodyMotion: coupling residual's floors (below them a body"
+        << " counts as at rest):" << nl;
+    forAll(names_, bi)
+    {
+        for (const label i : dofs_[bi])
+        {
+            Info<< "    " << dofName(i).c_str() << ' '
+                << residual_.floors()[i];
+            if (residual_.rotation(i))
+            {
+                Info<< " rad/s^2 (radius of gyration "
+                    << residual_.gyrations()[i] << " m)";
+            }
+            else
+            {
+                Info<< " m/s^2";
+            }
+            Info<< nl;
+        }
+    }
+    Info<< endl;
+}
+
+
 Foam::string Foam::RBD::rigidBodyDriver::dofName(const label i) const
 {
     // The body (not a jointBody of its composite joint) that the degree of
@@ -611,7 +667,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     externalForces_(externalForces),
     tableEveryStep_(true),
     curTimeIndex_(-1),
-    residual_(coeffs, motion_.model()),
+    residual_(coeffs, motion_.model(), externalForces),
     nCalls_(0),
     names_(coeffs.subDict("bodies").toc()),
     bodyIDs_(names_.size()),
@@ -654,6 +710,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 
     // The motion's amplitudes for the coupling's residual, if written
     residual_.readAmplitudes(stateDict);
+    reportFloors();
 
     // A state that does not say when it is starts at the case's start time
     if (!coeffs.found("t") && !stateDict.found("t"))

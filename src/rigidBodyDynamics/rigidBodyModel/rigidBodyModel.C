@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
+#include "keywordTable.H"
 #include "masslessBody.H"
 #include "jointBody.H"
 #include "compositeBody.H"
@@ -32,6 +33,11 @@ namespace Foam
 namespace RBD
 {
     defineTypeNameAndDebug(rigidBodyModel, 0);
+    addRigidBodyCommonKeywords(coefficients, Model, "bodies", "g");
+    addRigidBodyCommonKeywords
+    (
+        body, Body, "type", "parent", "mergeWith", "transform", "joint"
+    );
 }
 }
 

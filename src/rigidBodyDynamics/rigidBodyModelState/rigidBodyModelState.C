@@ -22,6 +22,14 @@ License
 
 #include "rigidBodyModelState.H"
 #include "IOstreams.H"
+#include "keywordTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+addRigidBodyCommonKeywords
+(
+    coefficients, State, "q", "qDot", "qDdot", "t", "deltaT"
+);
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

@@ -25,6 +25,15 @@ License
 #include "rigidBodyEntries.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
+#include "keywordTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+addRigidBodyCommonKeywords
+(
+    coefficients, Motion, "restraints", "solver", "nIter", "ramp", "rampCoeffs"
+);
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

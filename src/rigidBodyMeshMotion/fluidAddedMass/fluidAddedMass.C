@@ -52,6 +52,7 @@ Foam::fluidAddedMass::fluidAddedMass
     fb_(bodyIDs.size(), Zero),
     A_(model.nDoF(), Zero),
     Aprev_(model.nDoF(), Zero),
+    length_(RBD::dofLengths(model)),
     interval_(1),
     countdown_(0)
 {}
@@ -324,14 +325,17 @@ bool Foam::fluidAddedMass::update
     Aprev_ = A_;
     compute(model, s);
 
-    // Its relative change since the last computation sets the interval
+    // Its relative change since the last computation sets the interval;
+    // each entry over its degrees of freedom's lengths is a mass (kg), so
+    // that the change weighs the entries alike at any Froude scale
     scalar d2 = 0, a2 = 0;
     for (label i = 0; i < A_.m(); ++i)
     {
         for (label j = 0; j < A_.n(); ++j)
         {
-            d2 += sqr(A_(i, j) - Aprev_(i, j));
-            a2 += sqr(A_(i, j));
+            const scalar l2 = sqr(length_[i]*length_[j]);
+            d2 += sqr(A_(i, j) - Aprev_(i, j))/l2;
+            a2 += sqr(A_(i, j))/l2;
         }
     }
     const scalar change = sqrt(d2/max(a2, VSMALL));

@@ -23,6 +23,7 @@ License
 #include "cuboid.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -30,6 +31,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(cuboid, 0);
     addToRunTimeSelectionTable(rigidBody, cuboid, dictionary);
+    addRigidBodyKeywords(body, cuboid, "L", "mass", "centreOfMass");
 }
 }
 

@@ -22,6 +22,7 @@ License
 
 #include "jointBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -29,6 +30,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(jointBody, 0);
     addToRunTimeSelectionTable(rigidBody, jointBody, dictionary);
+    addRigidBodyKeywords(body, jointBody);
 }
 }
 

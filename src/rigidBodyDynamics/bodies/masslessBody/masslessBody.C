@@ -22,6 +22,7 @@ License
 
 #include "masslessBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -29,6 +30,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(masslessBody, 0);
     addToRunTimeSelectionTable(rigidBody, masslessBody, dictionary);
+    addRigidBodyKeywords(body, masslessBody);
 }
 }
 

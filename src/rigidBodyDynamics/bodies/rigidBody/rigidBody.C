@@ -22,6 +22,7 @@ License
 
 #include "rigidBody.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,6 +33,7 @@ namespace RBD
     defineTypeNameAndDebug(rigidBody, 0);
     defineRunTimeSelectionTable(rigidBody, dictionary);
     addToRunTimeSelectionTable(rigidBody, rigidBody, dictionary);
+    addRigidBodyKeywords(body, rigidBody, "mass", "centreOfMass", "inertia");
 }
 }
 

@@ -23,6 +23,7 @@ License
 #include "sphere.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -30,6 +31,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(sphere, 0);
     addToRunTimeSelectionTable(rigidBody, sphere, dictionary);
+    addRigidBodyKeywords(body, sphere, "radius", "mass", "centreOfMass");
 }
 }
 

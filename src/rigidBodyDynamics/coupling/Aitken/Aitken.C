@@ -22,6 +22,7 @@ License
 
 #include "Aitken.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,6 +34,7 @@ namespace couplingSchemes
 {
     defineTypeNameAndDebug(Aitken, 0);
     addToRunTimeSelectionTable(couplingScheme, Aitken, dictionary);
+    addRigidBodyKeywords(coupling, Aitken);
 }
 }
 }
@@ -62,13 +64,15 @@ void Foam::RBD::couplingSchemes::Aitken::correct
     const bool firstSolve
 )
 {
+    // The products weigh rotations by their lengths squared, as
+    // translations: the factor is the same at any Froude scale
     scalar rdr = 0, dr2 = 0;
     forAll(a, i)
     {
         const scalar r = a[i] - aGiven[i];
         const scalar dr = r - rPrev_[i];
-        rdr += rPrev_[i]*dr;
-        dr2 += sqr(dr);
+        rdr += weight_[i]*rPrev_[i]*dr;
+        dr2 += weight_[i]*sqr(dr);
         rPrev_[i] = r;
     }
 

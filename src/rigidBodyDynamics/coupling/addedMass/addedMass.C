@@ -23,6 +23,7 @@ License
 #include "addedMass.H"
 #include "denseLinearAlgebra.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,10 @@ namespace couplingSchemes
 {
     defineTypeNameAndDebug(addedMass, 0);
     addToRunTimeSelectionTable(couplingScheme, addedMass, dictionary);
+    addRigidBodyKeywords
+    (
+        coupling, addedMass, "addedMassRelaxation", "addedMass"
+    );
 }
 }
 }
@@ -210,7 +215,8 @@ void Foam::RBD::couplingSchemes::addedMass::update()
 {
     const label n = A_.m();
 
-    // The sums, older pairs forgotten a little
+    // The sums, older pairs forgotten a little; the trace weighs
+    // rotations by their lengths squared, as translations
     scalar trQ = 0;
     for (label i = 0; i < n; ++i)
     {
@@ -219,7 +225,7 @@ void Foam::RBD::couplingSchemes::addedMass::update()
             P_(i, j) = forgetting_*P_(i, j) + y_[i]*s_[j];
             Q_(i, j) = forgetting_*Q_(i, j) + s_[i]*s_[j];
         }
-        trQ += Q_(i, i);
+        trQ += weight_[i]*Q_(i, i);
     }
 
     // A^T = Q^-1 P^T, Q regularised where no pair has moved the
@@ -228,7 +234,8 @@ void Foam::RBD::couplingSchemes::addedMass::update()
     {
         for (label j = 0; j < n; ++j)
         {
-            M_(i, j) = Q_(i, j) + (i == j ? 1e-9*trQ + VSMALL : 0);
+            M_(i, j) =
+                Q_(i, j) + (i == j ? 1e-9*trQ/weight_[i] + VSMALL : 0);
         }
     }
 
@@ -332,19 +339,19 @@ void Foam::RBD::couplingSchemes::addedMass::correct
     massMatrix(state);
 
     // K counts where it is more than the round-off of its finite
-    // differences against the mass matrix
+    // differences against the mass matrix: an entry against the entries
+    // of its row and column's diagonal, of the same units at any scale
     if (newK_)
     {
-        scalar kMax = 0, hMax = 0;
+        hasK_ = false;
         for (label i = 0; i < K_.m(); ++i)
         {
-            hMax = max(hMax, mag(H_(i, i)));
             for (label j = 0; j < K_.m(); ++j)
             {
-                kMax = max(kMax, mag(K_(i, j)));
+                hasK_ = hasK_
+                 || mag(K_(i, j)) > 1e-6*Foam::sqrt(mag(H_(i, i)*H_(j, j)));
             }
         }
-        hasK_ = kMax > 1e-6*hMax;
         newK_ = false;
     }
 

@@ -22,6 +22,7 @@ License
 
 #include "constant.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,6 +34,7 @@ namespace couplingSchemes
 {
     defineTypeNameAndDebug(constant, 0);
     addToRunTimeSelectionTable(couplingScheme, constant, dictionary);
+    addRigidBodyKeywords(coupling, constant);
 }
 }
 }

@@ -22,51 +22,17 @@ License
 
 #include "couplingResidual.H"
 #include "rigidBodyEntries.H"
+#include "couplingScales.H"
+#include "keywordTable.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace
-{
-
-//- Whether each degree of freedom of the model turns its body: its motion
-//  subspace column has an angular part (at q = 0)
-Foam::boolList rotations(const Foam::RBD::rigidBodyModel& model)
-{
-    using namespace Foam;
-
-    boolList rotation(model.nDoF(), false);
-    const scalarField q(model.nDoF(), Zero);
-    const scalarField qDot(model.nDoF(), Zero);
-
-    for (const RBD::joint& J : model.joints())
-    {
-        if (J.nDoF() == 0)
-        {
-            continue;
-        }
-        RBD::joint::XSvc xsvc;
-        J.jcalc(xsvc, q, qDot);
-        for (label k = 0; k < J.nDoF(); ++k)
-        {
-            rotation[J.qIndex() + k] = mag(xsvc.S[k].w()) > SMALL;
-        }
-    }
-
-    return rotation;
-}
-
-//- A non-negative entry, def if absent
-Foam::scalar readOrDefault
+// The old absolute floors are read to say that they are no longer used
+addRigidBodyCommonKeywords
 (
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar def
-)
-{
-    return dict.found(key) ? Foam::RBD::readNonNegative(dict, key) : def;
-}
-
-} // End anonymous namespace
+    coefficients, Residual, "couplingTolerance", "couplingFloorFraction",
+    "couplingFloorAcceleration", "couplingFloor", "couplingFloorRotation"
+);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -74,13 +40,18 @@ Foam::scalar readOrDefault
 Foam::RBD::couplingResidual::couplingResidual
 (
     const dictionary& dict,
-    const rigidBodyModel& model
+    const rigidBodyModel& model,
+    const bool coupled
 )
 :
     tolerance_(0.1),
-    floor_(0.1),
-    floorRotation_(0.1),
-    rotation_(rotations(model)),
+    rotation_(rotationDoFs(model)),
+    floorFraction_(0.01),
+    floorAcceleration_(0),
+    gyration_(dofLengths(model)),
+    floor_(model.nDoF(), Zero),
+    g_(mag(model.g())),
+    coupled_(coupled),
     peak_(model.nDoF(), Zero),
     peakPrev_(model.nDoF(), Zero),
     sign_(model.nDoF(), Zero),
@@ -104,8 +75,55 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
     tolerance_ = dict.found("couplingTolerance")
         ? readPositive(dict, "couplingTolerance")
         : 0.1;
-    floor_ = readOrDefault(dict, "couplingFloor", 0.1);
-    floorRotation_ = readOrDefault(dict, "couplingFloorRotation", 0.1);
+
+    for (const word key : {"couplingFloor", "couplingFloorRotation"})
+    {
+        if (dict.found(key))
+        {
+            FatalIOErrorInFunction(dict.lookup(key))
+                << "Entry " << key << " in " << dict.dictName()
+                << " is no longer read: an absolute floor is right at one"
+                << " scale only." << nl
+                << "    The floors now come from the model:"
+                << " couplingFloorFraction |g| (translations) and"
+                << " couplingFloorFraction |g|/r (rotations, r the radius of"
+                << " gyration about the joint's axis)." << nl
+                << "    Remove " << key << ", or give couplingFloorFraction"
+                << " (default 0.01); see docs/coupling.md" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    floorFraction_ = dict.found("couplingFloorFraction")
+        ? readNonNegative(dict, "couplingFloorFraction")
+        : 0.01;
+
+    // The translation floor: a fraction of g, or given if there is no g
+    scalar floor = floorFraction_*g_;
+    if (g_ < VSMALL)
+    {
+        if (dict.found("couplingFloorAcceleration"))
+        {
+            floorAcceleration_ =
+                readNonNegative(dict, "couplingFloorAcceleration");
+            floor = floorAcceleration_;
+        }
+        else if (coupled_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "g is zero, so the coupling residual's floor has no"
+                << " scale: give couplingFloorAcceleration [m/s^2] in "
+                << dict.dictName() << ", the amplitude of translational"
+                << " acceleration below which a body counts as at rest"
+                << " (with gravity it is couplingFloorFraction |g|)" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    forAll(floor_, i)
+    {
+        floor_[i] = rotation_[i] ? floor/gyration_[i] : floor;
+    }
 }
 
 
@@ -120,7 +138,7 @@ void Foam::RBD::couplingResidual::measure
         const scalar scale = max
         (
             max(peak_[i], peakPrev_[i]),
-            max(mag(a[i]), rotation_[i] ? floorRotation_ : floor_)
+            max(mag(a[i]), floor_[i])
         );
         residual_[i] = mag(d[i])/max(scale, VSMALL);
     }

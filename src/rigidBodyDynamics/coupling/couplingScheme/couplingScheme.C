@@ -21,6 +21,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "couplingScheme.H"
+#include "keywordTable.H"
+#include "couplingScales.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,6 +32,11 @@ namespace RBD
 {
     defineTypeNameAndDebug(couplingScheme, 0);
     defineRunTimeSelectionTable(couplingScheme, dictionary);
+    addRigidBodyCommonKeywords
+    (
+        coupling, Coupling, "accelerationRelaxationType", "accelerationRelaxation",
+        "accelerationDamping"
+    );
 }
 }
 
@@ -66,6 +73,8 @@ Foam::RBD::couplingScheme::couplingScheme
     model_(model),
     relaxation_(readFactor(dict, "accelerationRelaxation")),
     damping_(readFactor(dict, "accelerationDamping")),
+    length_(dofLengths(model)),
+    weight_(sqr(length_)),
     distance_(model.nDoF(), Zero)
 {}
 

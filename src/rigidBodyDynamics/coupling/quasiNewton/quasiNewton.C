@@ -23,6 +23,7 @@ License
 #include "quasiNewton.H"
 #include "denseLinearAlgebra.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,7 @@ namespace couplingSchemes
 {
     defineTypeNameAndDebug(quasiNewton, 0);
     addToRunTimeSelectionTable(couplingScheme, quasiNewton, dictionary);
+    addRigidBodyKeywords(coupling, quasiNewton);
 }
 }
 }
@@ -83,14 +85,16 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
 {
     const label n = Jinv_.m();
 
-    // The residual, and the changes since the previous solve
+    // The residual, and the changes since the previous solve; the norm
+    // weighs rotations by their lengths squared, as translations, so that
+    // Broyden's update is the same at any Froude scale
     scalar dr2 = 0;
     forAll(a, i)
     {
         const scalar r = a[i] - aGiven[i];
         da_[i] = aGiven[i] - aGivenPrev_[i];
         dr_[i] = r - rPrev_[i];
-        dr2 += sqr(dr_[i]);
+        dr2 += weight_[i]*sqr(dr_[i]);
         aGivenPrev_[i] = aGiven[i];
         rPrev_[i] = r;
     }
@@ -106,7 +110,7 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
             const scalar c = (da_[i] - JinvDr_[i])/dr2;
             for (label j = 0; j < n; ++j)
             {
-                Jinv_(i, j) += c*dr_[j];
+                Jinv_(i, j) += c*weight_[j]*dr_[j];
             }
             // Each degree of freedom is relaxed by a factor in (0, 2)
             valid = valid && -Jinv_(i, i) > 0.005 && -Jinv_(i, i) < 2;

@@ -23,6 +23,7 @@ License
 #include "Pa.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -32,6 +33,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pa, 0);
     addToRunTimeSelectionTable(joint, Pa, dictionary);
+    addRigidBodyKeywords(joint, Pa, "axis");
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Px.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Px, 0);
     addToRunTimeSelectionTable(joint, Px, dictionary);
+    addRigidBodyKeywords(joint, Px);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Pxyz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pxyz, 0);
     addToRunTimeSelectionTable(joint, Pxyz, dictionary);
+    addRigidBodyKeywords(joint, Pxyz);
 }
 }
 }

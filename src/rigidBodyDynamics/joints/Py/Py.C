@@ -22,6 +22,7 @@ License
 
 #include "Py.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Py, 0);
     addToRunTimeSelectionTable(joint, Py, dictionary);
+    addRigidBodyKeywords(joint, Py);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Pz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Pz, 0);
     addToRunTimeSelectionTable(joint, Pz, dictionary);
+    addRigidBodyKeywords(joint, Pz);
 }
 }
 }

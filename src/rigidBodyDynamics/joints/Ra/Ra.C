@@ -23,6 +23,7 @@ License
 #include "Ra.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -32,6 +33,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ra, 0);
     addToRunTimeSelectionTable(joint, Ra, dictionary);
+    addRigidBodyKeywords(joint, Ra, "axis");
 }
 }
 }

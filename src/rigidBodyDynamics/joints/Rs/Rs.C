@@ -22,6 +22,7 @@ License
 
 #include "Rs.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rs, 0);
     addToRunTimeSelectionTable(joint, Rs, dictionary);
+    addRigidBodyKeywords(joint, Rs);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Rx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rx, 0);
     addToRunTimeSelectionTable(joint, Rx, dictionary);
+    addRigidBodyKeywords(joint, Rx);
 }
 }
 }

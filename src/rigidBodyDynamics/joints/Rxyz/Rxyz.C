@@ -22,6 +22,7 @@ License
 
 #include "Rxyz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rxyz, 0);
     addToRunTimeSelectionTable(joint, Rxyz, dictionary);
+    addRigidBodyKeywords(joint, Rxyz);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Ry.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ry, 0);
     addToRunTimeSelectionTable(joint, Ry, dictionary);
+    addRigidBodyKeywords(joint, Ry);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Ryxz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Ryxz, 0);
     addToRunTimeSelectionTable(joint, Ryxz, dictionary);
+    addRigidBodyKeywords(joint, Ryxz);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Rz.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rz, 0);
     addToRunTimeSelectionTable(joint, Rz, dictionary);
+    addRigidBodyKeywords(joint, Rz);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "Rzyx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(Rzyx, 0);
     addToRunTimeSelectionTable(joint, Rzyx, dictionary);
+    addRigidBodyKeywords(joint, Rzyx);
 }
 }
 }

@@ -22,6 +22,7 @@ License
 
 #include "compositeJoint.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(composite, 0);
     addToRunTimeSelectionTable(joint, composite, dictionary);
+    addRigidBodyKeywords(joint, composite, "joints");
 }
 }
 }

@@ -24,6 +24,7 @@ License
 #include "Pxyz.H"
 #include "Rzyx.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -33,6 +34,7 @@ namespace joints
 {
     defineTypeNameAndDebug(floating, 0);
     addToRunTimeSelectionTable(joint, floating, dictionary);
+    addRigidBodyKeywords(joint, floating);
 }
 }
 }

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "joint.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -28,6 +29,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(joint, 0);
     defineRunTimeSelectionTable(joint, dictionary);
+    addRigidBodyCommonKeywords(joint, Joint, "type");
 }
 }
 

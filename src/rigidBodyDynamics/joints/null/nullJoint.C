@@ -22,6 +22,7 @@ License
 
 #include "nullJoint.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace joints
 {
     defineTypeNameAndDebug(null, 0);
     addToRunTimeSelectionTable(joint, null, dictionary);
+    addRigidBodyKeywords(joint, null);
 }
 }
 }

@@ -26,6 +26,7 @@ License
 #include "rigidBodyModel.H"
 #include "rigidBodyEntries.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "unitConversion.H"
 #include "vtkPolyline.H"
 #include "Switch.H"
@@ -45,6 +46,11 @@ namespace restraints
         restraint,
         catenaryLine,
         dictionary
+    );
+    addRigidBodyKeywords
+    (
+        restraint, catenaryLine, "length", "wetWeight", "EA", "seabedFriction",
+        "writeShape", "nShapePoints", "anchor", "refAttachmentPt", "seabed"
     );
 }
 }

@@ -24,6 +24,7 @@ License
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -33,6 +34,10 @@ namespace restraints
 {
     defineTypeNameAndDebug(externalForce, 0);
     addToRunTimeSelectionTable(restraint, externalForce, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, externalForce, "location", "force", "forceCoeffs"
+    );
 }
 }
 }

@@ -24,6 +24,7 @@ License
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -33,6 +34,7 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearDamper, 0);
     addToRunTimeSelectionTable(restraint, linearDamper, dictionary);
+    addRigidBodyKeywords(restraint, linearDamper, "coeff");
 }
 }
 }

@@ -24,6 +24,7 @@ License
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -34,6 +35,11 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearSpring, 0);
     addToRunTimeSelectionTable(restraint, linearSpring, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, linearSpring, "anchor", "refAttachmentPt", "stiffness",
+        "damping", "restLength"
+    );
 }
 }
 }

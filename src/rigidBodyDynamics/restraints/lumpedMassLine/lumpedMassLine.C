@@ -27,6 +27,7 @@ License
 #include "rigidBodyEntries.H"
 #include "vtkPolyline.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 #include "Switch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -44,6 +45,13 @@ namespace restraints
         restraint,
         lumpedMassLine,
         dictionary
+    );
+    addRigidBodyKeywords
+    (
+        restraint, lumpedMassLine, "anchor", "refAttachmentPt", "length",
+        "nSegments", "massPerLength", "diameter", "EA", "rhoWater", "Cdn",
+        "Cdt", "Can", "Cat", "dampingRatio", "BA", "seabed", "seabedStiffness",
+        "seabedDamping", "writeShape"
     );
 }
 }
@@ -334,6 +342,19 @@ bool Foam::RBD::restraints::lumpedMassLine::read(const dictionary& dict)
     }
     p.kSeabed = optional("seabedStiffness", 3e6);
     p.cSeabed = optional("seabedDamping", 3e5);
+
+    // MoorDyn's default seabed damping is a full-scale value in Pa s/m:
+    // against the critical damping of a node on the seabed's spring,
+    // 2 sqrt(kSeabed mu/d), it scales as sqrt(lambda); say what it is for
+    // this line (docs/coupling.md, "Right at any scale")
+    if (p.hasSeabed && !dict.found("seabedDamping") && p.kSeabed > 0)
+    {
+        Info<< "lumpedMassLine " << dict.dictName() << ": seabedDamping "
+            << p.cSeabed << " Pa s/m (MoorDyn's default, an absolute"
+            << " value) is " << p.cSeabed/(2*sqrt(p.kSeabed*p.mu/p.d))
+            << " times critical for a node of this line on the seabed;"
+            << " give seabedDamping to set it" << endl;
+    }
 
     writeShape_ = dict.getOrDefault<Switch>("writeShape", true);
 

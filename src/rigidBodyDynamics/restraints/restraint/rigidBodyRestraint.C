@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyRestraint.H"
+#include "keywordTable.H"
 #include "rigidBodyModel.H"
 
 namespace Foam
@@ -29,6 +30,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(restraint, 0);
     defineRunTimeSelectionTable(restraint, dictionary);
+    addRigidBodyCommonKeywords(restraint, Restraint, "type", "body");
 }
 }
 

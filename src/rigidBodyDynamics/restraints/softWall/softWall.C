@@ -25,6 +25,7 @@ License
 #include "rigidBodyModel.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -34,6 +35,11 @@ namespace restraints
 {
     defineTypeNameAndDebug(softWall, 0);
     addToRunTimeSelectionTable(restraint, softWall, dictionary);
+    addRigidBodyKeywords
+    (
+        restraint, softWall, "anchor", "wallNormal", "refAttachmentPt", "C",
+        "psi"
+    );
 }
 }
 }

@@ -24,6 +24,7 @@ License
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -33,6 +34,7 @@ namespace restraints
 {
     defineTypeNameAndDebug(sphericalAngularDamper, 0);
     addToRunTimeSelectionTable(restraint, sphericalAngularDamper, dictionary);
+    addRigidBodyKeywords(restraint, sphericalAngularDamper, "coeff");
 }
 }
 }

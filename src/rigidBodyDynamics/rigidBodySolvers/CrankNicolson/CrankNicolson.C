@@ -22,6 +22,7 @@ License
 
 #include "CrankNicolson.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(CrankNicolson, 0);
     addToRunTimeSelectionTable(rigidBodySolver, CrankNicolson, dictionary);
+    addRigidBodyKeywords(solver, CrankNicolson, "aoc", "voc");
 }
 }
 }

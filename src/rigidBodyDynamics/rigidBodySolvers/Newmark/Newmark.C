@@ -22,6 +22,7 @@ License
 
 #include "Newmark.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(Newmark, 0);
     addToRunTimeSelectionTable(rigidBodySolver, Newmark, dictionary);
+    addRigidBodyKeywords(solver, Newmark, "gamma", "beta");
 }
 }
 }

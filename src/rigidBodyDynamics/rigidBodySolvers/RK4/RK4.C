@@ -22,6 +22,7 @@ License
 
 #include "RK4.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(RK4, 0);
     addToRunTimeSelectionTable(rigidBodySolver, RK4, dictionary);
+    addRigidBodyKeywords(solver, RK4);
 }
 }
 }

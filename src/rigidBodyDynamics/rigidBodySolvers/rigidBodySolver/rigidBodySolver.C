@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodySolver.H"
+#include "keywordTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,6 +31,7 @@ namespace RBD
 {
     defineTypeNameAndDebug(rigidBodySolver, 0);
     defineRunTimeSelectionTable(rigidBodySolver, dictionary);
+    addRigidBodyCommonKeywords(solver, Solver, "type");
 }
 }
 

@@ -22,6 +22,7 @@ License
 
 #include "symplectic.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordTable.H"
 
 namespace Foam
 {
@@ -31,6 +32,7 @@ namespace rigidBodySolvers
 {
     defineTypeNameAndDebug(symplectic, 0);
     addToRunTimeSelectionTable(rigidBodySolver, symplectic, dictionary);
+    addRigidBodyKeywords(solver, symplectic);
 }
 }
 }

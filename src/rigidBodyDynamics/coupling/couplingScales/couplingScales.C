@@ -1,0 +1,65 @@
+#include "couplingScales.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::boolList Foam::RBD::rotationDoFs(const rigidBodyModel& model)
+{
+    boolList rotation(model.nDoF(), false);
+    const scalarField q(model.nDoF(), Zero);
+    const scalarField qDot(model.nDoF(), Zero);
+
+    for (const joint& J : model.joints())
+    {
+        if (J.nDoF() == 0)
+        {
+            continue;
+        }
+        joint::XSvc xsvc;
+        J.jcalc(xsvc, q, qDot);
+        for (label k = 0; k < J.nDoF(); ++k)
+        {
+            rotation[J.qIndex() + k] = mag(xsvc.S[k].w()) > SMALL;
+        }
+    }
+
+    return rotation;
+}
+
+
+Foam::scalarField Foam::RBD::dofLengths(const rigidBodyModel& model)
+{
+    const label nb = model.nBodies();
+    const boolList rotation(rotationDoFs(model));
+
+    // Mass carried by each body's joint: its own and its descendants'
+    scalarField carried(nb, Zero);
+    for (label i = nb - 1; i > 0; --i)
+    {
+        carried[i] += model.bodies()[i].m();
+        if (model.lambda()[i] > 0)
+        {
+            carried[model.lambda()[i]] += carried[i];
+        }
+    }
+
+    rigidBodyModelState state(model.nDoF());
+    rigidBodyModelWorkspace ws(model);
+    scalarSquareMatrix H(model.nDoF(), Zero);
+    model.massMatrix(state, ws, H);
+
+    scalarField l(model.nDoF(), 1.0);
+    for (label i = 1; i < nb; ++i)
+    {
+        const joint& J = model.joints()[i];
+        for (label k = 0; k < J.nDoF(); ++k)
+        {
+            const label dof = J.qIndex() + k;
+            if (rotation[dof] && carried[i] > 0 && H(dof, dof) > 0)
+            {
+                l[dof] = Foam::sqrt(H(dof, dof)/carried[i]);
+            }
+        }
+    }
+
+    return l;
+}
