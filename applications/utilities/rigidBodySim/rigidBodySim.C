@@ -72,6 +72,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "rigidBodyDriver.H"
+#include "keywordTable.H"
 #include "rigidBodySimInput.H"
 #include "rigidBodySimControls.H"
 #include "rigidBodySimReport.H"
