@@ -34,7 +34,10 @@ namespace restraints
 {
     defineTypeNameAndDebug(linearDamper, 0);
     addToRunTimeSelectionTable(restraint, linearDamper, dictionary);
-    addRigidBodyKeywords(restraint, linearDamper, "coeff");
+    addRigidBodyKeywords
+    (
+        restraint, linearDamper, "coeff", "refAttachmentPt", "anchorBody"
+    );
 }
 }
 }
@@ -63,9 +66,24 @@ void Foam::RBD::restraints::linearDamper::restrain
 {
     const rigidBodyModel::pointMotion pm
     (
-        model_.globalPointMotion(bodyID_, Zero, ws)
+        model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
     );
-    addForce(fx, pm.x, -coeff_*pm.v);
+
+    if (anchorBodyID_ < 0)
+    {
+        addForce(fx, pm.x, -coeff_*pm.v);
+        return;
+    }
+
+    // The anchor body's point at the same place
+    const vector local(model_.X0(anchorBodyID_, ws).transformPoint(pm.x));
+    const rigidBodyModel::pointMotion am
+    (
+        model_.globalPointMotion(anchorBodyID_, local, ws)
+    );
+    const vector F(-coeff_*(pm.v - am.v));
+    addForce(fx, pm.x, F);
+    fx[anchorMasterID_] += spatialVector(pm.x ^ -F, -F);
 }
 
 
@@ -73,6 +91,24 @@ bool Foam::RBD::restraints::linearDamper::read(const dictionary& dict)
 {
     restraint::read(dict);
     coeff_ = readNonNegative(dict, "coeff");
+    refAttachmentPt_ =
+        dict.getOrDefault<vector>("refAttachmentPt", Zero);
+
+    anchorBodyID_ = -1;
+    anchorMasterID_ = -1;
+    if (dict.found("anchorBody"))
+    {
+        anchorBodyID_ = model_.bodyID(dict, "anchorBody");
+        anchorMasterID_ = model_.masterID(anchorBodyID_);
+        if (anchorMasterID_ == masterID_)
+        {
+            FatalIOErrorInFunction(dict.lookup("anchorBody"))
+                << "Restraint " << name_ << ": anchorBody "
+                << dict.get<word>("anchorBody") << " moves with body "
+                << dict.get<word>("body") << " itself: the damper would"
+                << " act within one rigid body" << nl << exit(FatalIOError);
+        }
+    }
     return true;
 }
 
@@ -81,4 +117,9 @@ void Foam::RBD::restraints::linearDamper::write(Ostream& os) const
 {
     restraint::write(os);
     os.writeEntry("coeff", coeff_);
+    os.writeEntry("refAttachmentPt", refAttachmentPt_);
+    if (anchorBodyID_ >= 0)
+    {
+        os.writeEntry("anchorBody", model_.name(anchorBodyID_));
+    }
 }

@@ -37,8 +37,8 @@ namespace restraints
     addToRunTimeSelectionTable(restraint, linearSpring, dictionary);
     addRigidBodyKeywords
     (
-        restraint, linearSpring, "anchor", "refAttachmentPt", "stiffness",
-        "damping", "restLength"
+        restraint, linearSpring, "anchor", "anchorBody", "refAttachmentPt",
+        "stiffness", "damping", "restLength"
     );
 }
 }
@@ -71,7 +71,20 @@ void Foam::RBD::restraints::linearSpring::restrain
         model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
     );
     const vector& p = pm.x;
-    const vector r(p - anchor_);
+
+    // The anchor: fixed, or a point of the anchor body
+    vector a(anchor_), aDot(Zero);
+    if (anchorBodyID_ >= 0)
+    {
+        const rigidBodyModel::pointMotion am
+        (
+            model_.globalPointMotion(anchorBodyID_, anchor_, ws)
+        );
+        a = am.x;
+        aDot = am.v;
+    }
+
+    const vector r(p - a);
     const scalar L = mag(r);
 
     if (L < VSMALL)
@@ -80,9 +93,14 @@ void Foam::RBD::restraints::linearSpring::restrain
     }
 
     const vector dir(r/L);
-    const scalar LDot = dir & pm.v;
+    const scalar LDot = dir & (pm.v - aDot);
+    const vector F(-(stiffness_*(L - restLength_) + damping_*LDot)*dir);
 
-    addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
+    addForce(fx, p, F);
+    if (anchorBodyID_ >= 0)
+    {
+        fx[anchorMasterID_] += spatialVector(a ^ -F, -F);
+    }
 }
 
 
@@ -99,6 +117,21 @@ bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
     restraint::read(dict);
 
     anchor_ = dict.get<vector>("anchor");
+    anchorBodyID_ = -1;
+    anchorMasterID_ = -1;
+    if (dict.found("anchorBody"))
+    {
+        anchorBodyID_ = model_.bodyID(dict, "anchorBody");
+        anchorMasterID_ = model_.masterID(anchorBodyID_);
+        if (anchorMasterID_ == masterID_)
+        {
+            FatalIOErrorInFunction(dict.lookup("anchorBody"))
+                << "Restraint " << name_ << ": anchorBody "
+                << dict.get<word>("anchorBody") << " moves with body "
+                << dict.get<word>("body") << " itself: the spring would"
+                << " act within one rigid body" << nl << exit(FatalIOError);
+        }
+    }
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
     stiffness_ = readNonNegative(dict, "stiffness");
     damping_ = readNonNegative(dict, "damping");
@@ -112,6 +145,10 @@ void Foam::RBD::restraints::linearSpring::write(Ostream& os) const
 {
     restraint::write(os);
     os.writeEntry("anchor", anchor_);
+    if (anchorBodyID_ >= 0)
+    {
+        os.writeEntry("anchorBody", model_.name(anchorBodyID_));
+    }
     os.writeEntry("refAttachmentPt", refAttachmentPt_);
     os.writeEntry("stiffness", stiffness_);
     os.writeEntry("damping", damping_);
