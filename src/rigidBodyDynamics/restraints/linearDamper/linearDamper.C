@@ -22,6 +22,7 @@ License
 
 #include "linearDamper.H"
 #include "rigidBodyEntries.H"
+#include "restraintReport.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
@@ -84,6 +85,16 @@ void Foam::RBD::restraints::linearDamper::restrain
     const vector F(-coeff_*(pm.v - am.v));
     addForce(fx, pm.x, F);
     fx[anchorMasterID_] += spatialVector(pm.x ^ -F, -F);
+}
+
+
+void Foam::RBD::restraints::linearDamper::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
+{
+    report.otherBodyID = anchorBodyID_;
 }
 
 

@@ -22,9 +22,11 @@ License
 
 #include "linearJointSpring.H"
 #include "rigidBodyEntries.H"
+#include "restraintReport.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
+#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -160,6 +162,33 @@ Foam::RBD::restraints::linearJointSpring::linearJointSpring
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar
+Foam::RBD::restraints::linearJointSpring::naturalPeriod() const
+{
+    const joint& J = model_.joints()[masterID_];
+    if (dofs_.size() != 1 || J.nDoF() != 1 || !(stiffness_[0] > 0))
+    {
+        return 0;
+    }
+
+    joint::XSvc xsvc;
+    const scalarField zero(model_.nDoF(), Zero);
+    J.jcalc(xsvc, zero, zero);
+    const spatialVector& S = xsvc.S[0];
+    const rigidBodyInertia& I = model_.bodies()[masterID_];
+
+    // A rotation's inertia about its axis through the body's origin
+    scalar inertia = I.m();
+    if (mag(S.w()) > SMALL)
+    {
+        const vector w(S.w()/mag(S.w()));
+        inertia = (w & (I.Ic() & w)) + I.m()*magSqr(w ^ I.c());
+    }
+
+    return constant::mathematical::twoPi*sqrt(inertia/stiffness_[0]);
+}
+
+
 void Foam::RBD::restraints::linearJointSpring::restrain
 (
     scalarField& tau,
@@ -240,6 +269,17 @@ void Foam::RBD::restraints::linearJointSpring::readState
         dict.readIfPresent("power", power_);
         committed_ = true;
     }
+}
+
+
+void Foam::RBD::restraints::linearJointSpring::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
+{
+    report.otherBodyID = model_.jointAncestor(masterID_);
+    report.onJoint = true;
 }
 
 

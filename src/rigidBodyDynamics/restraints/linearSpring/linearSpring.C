@@ -22,6 +22,7 @@ License
 
 #include "linearSpring.H"
 #include "rigidBodyEntries.H"
+#include "restraintReport.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
@@ -109,6 +110,16 @@ Foam::scalar Foam::RBD::restraints::linearSpring::naturalPeriod() const
     using constant::mathematical::twoPi;
     const scalar m = model_.bodies()[masterID_].m();
     return stiffness_ > 0 ? twoPi*sqrt(m/stiffness_) : 0;
+}
+
+
+void Foam::RBD::restraints::linearSpring::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
+{
+    report.otherBodyID = anchorBodyID_;
 }
 
 
