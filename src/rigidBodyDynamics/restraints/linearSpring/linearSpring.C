@@ -128,21 +128,9 @@ bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
     restraint::read(dict);
 
     anchor_ = dict.get<vector>("anchor");
-    anchorBodyID_ = -1;
-    anchorMasterID_ = -1;
-    if (dict.found("anchorBody"))
-    {
-        anchorBodyID_ = model_.bodyID(dict, "anchorBody");
-        anchorMasterID_ = model_.masterID(anchorBodyID_);
-        if (anchorMasterID_ == masterID_)
-        {
-            FatalIOErrorInFunction(dict.lookup("anchorBody"))
-                << "Restraint " << name_ << ": anchorBody "
-                << dict.get<word>("anchorBody") << " moves with body "
-                << dict.get<word>("body") << " itself: the spring would"
-                << " act within one rigid body" << nl << exit(FatalIOError);
-        }
-    }
+    anchorBodyID_ = readAnchorBody(dict);
+    anchorMasterID_ =
+        anchorBodyID_ >= 0 ? model_.masterID(anchorBodyID_) : -1;
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
     stiffness_ = readNonNegative(dict, "stiffness");
     damping_ = readNonNegative(dict, "damping");

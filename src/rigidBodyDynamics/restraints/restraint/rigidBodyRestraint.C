@@ -84,6 +84,26 @@ Foam::autoPtr<Foam::RBD::restraint> Foam::RBD::restraint::New
 }
 
 
+Foam::label Foam::RBD::restraint::readAnchorBody(const dictionary& dict) const
+{
+    if (!dict.found("anchorBody"))
+    {
+        return -1;
+    }
+
+    const label id = model_.bodyID(dict, "anchorBody");
+    if (model_.masterID(id) == masterID_)
+    {
+        FatalIOErrorInFunction(dict.lookup("anchorBody"))
+            << "Restraint " << name_ << ": anchorBody "
+            << dict.get<word>("anchorBody") << " moves with body "
+            << dict.get<word>("body") << " itself: the restraint would act"
+            << " within one rigid body" << nl << exit(FatalIOError);
+    }
+    return id;
+}
+
+
 void Foam::RBD::restraint::prescribe
 (
     const rigidBodyModelState&,
