@@ -1,3 +1,25 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "rigidBodyDriver.H"
 #include "IOdictionary.H"
 #include "uniformDimensionedFields.H"
@@ -199,38 +221,6 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
 }
 
 
-Foam::label Foam::RBD::rigidBodyDriver::nColumns(const label bi) const
-{
-    // t, CofR, orientation, v, omega; q and qDot; external force and moment;
-    // restraint force and moment; kinetic and potential energy
-    return
-        1 + 3 + 9 + 3 + 3
-      + 2*dofs_[bi].size()
-      + (externalForces_ ? 6 : 0)
-      + 6
-      + 2
-      + (externalForces_ ? 1 : 0)
-      + restraintColumns(bi).size();
-}
-
-
-Foam::wordList Foam::RBD::rigidBodyDriver::restraintColumns
-(
-    const label bi
-) const
-{
-    wordList names;
-    for (const restraint& r : motion_.restraints())
-    {
-        if (r.bodyID() == bodyIDs_[bi])
-        {
-            names.append(r.tableColumns());
-        }
-    }
-    return names;
-}
-
-
 Foam::string Foam::RBD::rigidBodyDriver::modelSignature() const
 {
     const rigidBodyModel& m = model();
@@ -245,95 +235,58 @@ Foam::string Foam::RBD::rigidBodyDriver::modelSignature() const
 }
 
 
-Foam::word Foam::RBD::rigidBodyDriver::columnName
-(
-    const label bi,
-    const label k
-) const
-{
-    // The header's columns, one word each, in the order of fillRows
-    wordList names;
-    names.append("t");
-    for (const word c : {"x", "y", "z"}) names.append("CofR." + c);
-    for (const word c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
-    {
-        names.append("Orientation." + c);
-    }
-    for (const word c : {"x", "y", "z"}) names.append("v." + c);
-    for (const word c : {"x", "y", "z"}) names.append("omega." + c);
-    for (const label i : dofs_[bi]) names.append("q" + Foam::name(i));
-    for (const label i : dofs_[bi]) names.append("qDot" + Foam::name(i));
-    wordList forces{"restraintForce", "restraintMoment"};
-    if (externalForces_)
-    {
-        forces = {"fluidForce", "fluidMoment", forces[0], forces[1]};
-    }
-    for (const word& f : forces)
-    {
-        for (const word c : {"x", "y", "z"}) names.append(f + "." + c);
-    }
-    names.append("kineticEnergy");
-    names.append("potentialEnergy");
-    if (externalForces_)
-    {
-        names.append("couplingResidual");
-    }
-    names.append(restraintColumns(bi));
-
-    return k < names.size() ? names[k] : word("column" + Foam::name(k + 1));
-}
-
-
-void Foam::RBD::rigidBodyDriver::fillRows()
+void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
 {
     const rigidBodyModel& model = motion_.model();
     const rigidBodyModelWorkspace& ws = motion_.workspace();
     const rigidBodyModelState& state = motion_.state();
 
-    tauR_ = Zero;
-    fxR_ = Zero;
-    motion_.restraintForces(tauR_, fxR_);
+    const label id = bodyIDs_[bi];
+    const label master = model.masterID(id);
+    const rigidBody& body = model.bodies()[master];
+    const spatialTransform X(model.X0(id, ws));
+    const spatialVector v(model.v(id, Zero, ws));
 
-    forAll(bodyIDs_, bi)
+    row.start();
+    row.add("t", state.t());
+    row.add("CofR", X.r());
+    row.add("Orientation", X.E());
+    row.add("v", v.l());
+    row.add("omega", v.w());
+    for (const label i : dofs_[bi])
     {
-        const label id = bodyIDs_[bi];
-        const label master = model.masterID(id);
-        const rigidBody& body = model.bodies()[master];
-        const spatialTransform X(model.X0(id, ws));
-        const spatialVector v(model.v(id, Zero, ws));
-
-        scalarField& row = rows_[bi];
-        label k = 0;
-        row[k++] = state.t();
-        for (const scalar s : X.r()) row[k++] = s;
-        for (const scalar s : X.E()) row[k++] = s;
-        for (const scalar s : v.l()) row[k++] = s;
-        for (const scalar s : v.w()) row[k++] = s;
-        for (const label i : dofs_[bi]) row[k++] = state.q()[i];
-        for (const label i : dofs_[bi]) row[k++] = state.qDot()[i];
-        if (externalForces_)
+        row.add("q" + Foam::name(i), state.q()[i]);
+    }
+    for (const label i : dofs_[bi])
+    {
+        row.add("qDot" + Foam::name(i), state.qDot()[i]);
+    }
+    if (externalForces_)
+    {
+        row.add("fluidForce", fx_[master].l());
+        row.add("fluidMoment", fx_[master].w());
+    }
+    row.add("restraintForce", fxR_[master].l());
+    row.add("restraintMoment", fxR_[master].w());
+    row.add("kineticEnergy", body.kineticEnergy(ws.v[master]));
+    row.add
+    (
+        "potentialEnergy",
+        -body.m()*(model.g() & model.globalPoint(master, body.c(), ws))
+    );
+    if (externalForces_)
+    {
+        label dof = -1;
+        row.add("couplingResidual", bodyResidual(bi, dof));
+    }
+    for (const restraint& r : motion_.restraints())
+    {
+        if (r.bodyID() == id)
         {
-            for (const scalar s : fx_[master].l()) row[k++] = s;
-            for (const scalar s : fx_[master].w()) row[k++] = s;
-        }
-        for (const scalar s : fxR_[master].l()) row[k++] = s;
-        for (const scalar s : fxR_[master].w()) row[k++] = s;
-        row[k++] = body.kineticEnergy(ws.v[master]);
-        row[k++] =
-            -body.m()*(model.g() & model.globalPoint(master, body.c(), ws));
-        if (externalForces_)
-        {
-            label dof = -1;
-            row[k++] = bodyResidual(bi, dof);
-        }
-        for (const restraint& r : motion_.restraints())
-        {
-            if (r.bodyID() == id)
-            {
-                r.tableValues(row, k);
-            }
+            r.addColumns(row);
         }
     }
+    row.end();
 }
 
 
@@ -345,20 +298,29 @@ void Foam::RBD::rigidBodyDriver::writeRows()
     }
 
     floatingPointTraps traps;
-    fillRows();
+
+    // The restraints' forces at the state now, the step's end; then their
+    // own states committed there, which the rows show (the coupling's
+    // trial evaluations never reach the table)
+    tauR_ = Zero;
+    fxR_ = Zero;
+    motion_.restraintForces(tauR_, fxR_);
+    motion_.commitRestraints();
 
     forAll(rows_, bi)
     {
-        forAll(rows_[bi], k)
+        tableRow& row = rows_[bi];
+        fillRow(bi, row);
+        for (label k = 0; k < row.size(); ++k)
         {
-            if (!allFinite(rows_[bi][k]))
+            if (!allFinite(row[k]))
             {
                 stepFailed
                 (
-                    "The " + columnName(bi, k) + " of body " + names_[bi]
-                  + " at t = " + Foam::name(rows_[bi][0]) + " (column "
+                    "The " + row.name(k) + " of body " + names_[bi]
+                  + " at t = " + Foam::name(row[0]) + " (column "
                   + Foam::name(k + 1) + " of its table) is "
-                  + Foam::name(rows_[bi][k])
+                  + Foam::name(row[k])
                 );
             }
         }
@@ -379,38 +341,15 @@ void Foam::RBD::rigidBodyDriver::writeRows()
             OFstream& os = tables_[bi];
             os.precision(IOstream::defaultPrecision());
             os  << "# Motion of body " << names_[bi] << ": SI units; forces"
-                << " in global axes, moments about the global origin" << nl
-                << "# t CofR(x y z) Orientation(xx xy xz yx yy yz zx zy zz)"
-                << " v(x y z) omega(x y z)";
-            for (const label i : dofs_[bi]) os << " q" << i;
-            for (const label i : dofs_[bi]) os << " qDot" << i;
-            if (externalForces_)
-            {
-                os << " fluidForce(x y z) fluidMoment(x y z)";
-            }
-            os  << " restraintForce(x y z) restraintMoment(x y z)"
-                << " kineticEnergy potentialEnergy";
-            if (externalForces_)
-            {
-                os << " couplingResidual";
-            }
-            for (const word& c : restraintColumns(bi))
-            {
-                os << ' ' << c;
-            }
-            os  << nl;
+                << " in global axes, moments about the global origin" << nl;
+            rows_[bi].writeHeader(os);
         }
     }
 
     forAll(rows_, bi)
     {
         OFstream& os = tables_[bi];
-        const scalarField& row = rows_[bi];
-        forAll(row, k)
-        {
-            os  << (k ? " " : "") << row[k];
-        }
-        os  << nl;
+        rows_[bi].write(os);
 
         // On disk at least at every write time (the row's, written at the
         // start of the next step), and at every row where a fluid acts: a
@@ -747,7 +686,6 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     {
         bodyIDs_[bi] = model().bodyID(names_[bi]);
         dofs_[bi] = model().bodyDoFs(bodyIDs_[bi]);
-        rows_[bi].setSize(nColumns(bi), Zero);
     }
 
     // A state written by another model (one with the same number of

@@ -1,3 +1,25 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "rigidBodyModelWorkspace.H"
 #include "rigidBodyModel.H"
 
@@ -43,17 +65,18 @@ void Foam::RBD::rigidBodyModelWorkspace::setConstraints
     const label n = nConstraints ? model.nBodies() : 0;
     const label nDoF = nConstraints ? model.nDoF() : 0;
 
-    pR.setSize(n, Zero);
-    uR.setSize(n, Zero);
-    aR.setSize(n, Zero);
-    qDdotR.setSize(nConstraints);
-    for (scalarField& r : qDdotR)
+    responseBias.setSize(n, Zero);
+    responseJointBias.setSize(n, Zero);
+    responseAcceleration.setSize(n, Zero);
+    responseQDdot.setSize(nConstraints);
+    for (scalarField& r : responseQDdot)
     {
         r.setSize(nDoF, Zero);
     }
-    AR.setSize(nConstraints);
-    LR.setSize(nConstraints);
-    bR.setSize(nConstraints, Zero);
+    constraintMatrix.setSize(nConstraints);
+    constraintLU.setSize(nConstraints);
+    constraintPivots.setSize(nConstraints, 0);
+    motorMoments.setSize(nConstraints, Zero);
     tauZero.setSize(nDoF, Zero);
     fxZero.setSize(n, Zero);
     qDdotScratch.setSize(nDoF, Zero);

@@ -1,4 +1,27 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "rigidBodyMotion.H"
+#include "denseLinearAlgebra.H"
 #include "rigidBodyEntries.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
@@ -139,7 +162,7 @@ void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
         const vector e(model_.X0(c.bodyID, ws_).E() & c.axis);
         const scalar Ia = e & (body.Ic() & e);
 
-        if (!(ws_.AR(s, s) > 1e-9/max(Ia, VSMALL)))
+        if (!(ws_.constraintMatrix(s, s) > 1e-9/max(Ia, VSMALL)))
         {
             const restraint& r = restraints_[prescribing_[s]];
             const joint& J = model_.joints()[c.bodyID];
@@ -277,19 +300,14 @@ void Foam::RBD::rigidBodyMotion::solveJacobian
     // The accelerations' Jacobian J, made -H J
     model_.massMatrix(state, ws_, massMatrix_);
     wsValid_ = false;
+    matrixMatrix(massMatrix_, solveJacobian_, HJ_);
     for (label i = 0; i < n; ++i)
     {
         for (label j = 0; j < n; ++j)
         {
-            scalar v = 0;
-            for (label k = 0; k < n; ++k)
-            {
-                v -= massMatrix_(i, k)*solveJacobian_(k, j);
-            }
-            HJ_(i, j) = v;
+            solveJacobian_(i, j) = -HJ_(i, j);
         }
     }
-    solveJacobian_ = HJ_;
 }
 
 
@@ -472,9 +490,8 @@ Foam::RBD::rigidBodyMotion::workspace()
 }
 
 
-void Foam::RBD::rigidBodyMotion::newTime()
+void Foam::RBD::rigidBodyMotion::commitRestraints()
 {
-    // The restraints with states of their own start their step here
     bool stateful = false;
     forAll(restraints_, ri)
     {
@@ -485,9 +502,16 @@ void Foam::RBD::rigidBodyMotion::newTime()
         const rigidBodyModelWorkspace& ws = workspace();
         forAll(restraints_, ri)
         {
-            restraints_[ri].newTime(state_, ws);
+            restraints_[ri].commit(state_, ws);
         }
     }
+}
+
+
+void Foam::RBD::rigidBodyMotion::newTime()
+{
+    // The restraints with states of their own start their step here
+    commitRestraints();
 
     state0_ = state_;
     nSolves_ = 0;

@@ -1,4 +1,27 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "addedMass.H"
+#include "denseLinearAlgebra.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
 
@@ -116,86 +139,12 @@ void Foam::RBD::couplingSchemes::addedMass::massMatrix
 }
 
 
-bool Foam::RBD::couplingSchemes::addedMass::cholesky()
-{
-    const label n = M_.m();
-
-    for (label j = 0; j < n; ++j)
-    {
-        scalar d = M_(j, j);
-        for (label k = 0; k < j; ++k)
-        {
-            d -= sqr(L_(j, k));
-        }
-        if (!(d > 0))
-        {
-            return false;
-        }
-        L_(j, j) = sqrt(d);
-
-        for (label i = j + 1; i < n; ++i)
-        {
-            scalar v = M_(i, j);
-            for (label k = 0; k < j; ++k)
-            {
-                v -= L_(i, k)*L_(j, k);
-            }
-            L_(i, j) = v/L_(j, j);
-        }
-    }
-
-    return true;
-}
-
-
-void Foam::RBD::couplingSchemes::addedMass::choleskySolve
-(
-    const scalarField& b,
-    scalarField& x
-) const
-{
-    const label n = L_.m();
-
-    for (label i = 0; i < n; ++i)
-    {
-        scalar v = b[i];
-        for (label k = 0; k < i; ++k)
-        {
-            v -= L_(i, k)*x[k];
-        }
-        x[i] = v/L_(i, i);
-    }
-    for (label i = n - 1; i >= 0; --i)
-    {
-        scalar v = x[i];
-        for (label k = i + 1; k < n; ++k)
-        {
-            v -= L_(k, i)*x[k];
-        }
-        x[i] = v/L_(i, i);
-    }
-}
-
-
 Foam::scalar Foam::RBD::couplingSchemes::addedMass::normH
 (
     const scalarField& x
 ) const
 {
-    const label n = H_.m();
-
-    scalar xHx = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        scalar Hx = 0;
-        for (label j = 0; j < n; ++j)
-        {
-            Hx += H_(i, j)*x[j];
-        }
-        xHx += x[i]*Hx;
-    }
-
-    return sqrt(max(xHx, scalar(0)));
+    return sqrt(max(quadraticForm(H_, x), scalar(0)));
 }
 
 
@@ -214,22 +163,21 @@ bool Foam::RBD::couplingSchemes::addedMass::newtonStep
     {
         r_[i] = a[i] - aGiven[i];
     }
+    matrixVector(H_, r_, b_);
     for (label i = 0; i < n; ++i)
     {
-        b_[i] = 0;
         for (label j = 0; j < n; ++j)
         {
-            b_[i] += H_(i, j)*r_[j];
             M_(i, j) =
                 H_(i, j) + aScale*A_(i, j) + (withK ? K_(i, j) : 0);
         }
     }
 
-    if (!cholesky())
+    if (!choleskyDecompose(M_, L_))
     {
         return false;
     }
-    choleskySolve(b_, x_);
+    choleskySolve(L_, b_, x_);
 
     for (label i = 0; i < n; ++i)
     {
@@ -254,7 +202,7 @@ void Foam::RBD::couplingSchemes::addedMass::choleskySolveRows
         {
             b_[k] = B(row, k);
         }
-        choleskySolve(b_, x_);
+        choleskySolve(L_, b_, x_);
         for (label k = 0; k < n; ++k)
         {
             X(row, k) = x_[k];
@@ -292,7 +240,7 @@ void Foam::RBD::couplingSchemes::addedMass::update()
     }
 
     Aold_ = A_;
-    if (cholesky())
+    if (choleskyDecompose(M_, L_))
     {
         choleskySolveRows(P_, A_);
 
@@ -318,7 +266,7 @@ void Foam::RBD::couplingSchemes::addedMass::update()
 
     // Refused unless A > -H/10: added mass is not negative, and a fit
     // spoilt by noise must not leave H + A near losing definiteness
-    const bool accepted = cholesky();
+    const bool accepted = choleskyDecompose(M_, L_);
     if (accepted)
     {
         learnt_ = true;
@@ -360,14 +308,13 @@ void Foam::RBD::couplingSchemes::addedMass::learn
         const scalar sH = normH(s_);
         if (sH > 1e-6*max(normH(aGiven), normH(a)) && sH > VSMALL)
         {
-            // y less the part the solve's own Jacobian explains
+            // y less the part the solve's own Jacobian explains: -(H r +
+            // K s), x_ the scratch for K s
+            matrixVector(H_, r_, y_);
+            matrixVector(K_, s_, x_);
             for (label i = 0; i < n; ++i)
             {
-                y_[i] = 0;
-                for (label j = 0; j < n; ++j)
-                {
-                    y_[i] -= H_(i, j)*r_[j] + K_(i, j)*s_[j];
-                }
+                y_[i] = -(y_[i] + x_[i]);
             }
             update();
         }

@@ -1,4 +1,27 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "quasiNewton.H"
+#include "denseLinearAlgebra.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
 
@@ -79,14 +102,7 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
     // Broyden's inverse update from the previous solve of the step
     if (!firstSolve && dr2 > VSMALL)
     {
-        for (label i = 0; i < n; ++i)
-        {
-            JinvDr_[i] = 0;
-            for (label j = 0; j < n; ++j)
-            {
-                JinvDr_[i] += Jinv_(i, j)*dr_[j];
-            }
-        }
+        matrixVector(Jinv_, dr_, JinvDr_);
 
         bool valid = true;
         for (label i = 0; i < n; ++i)
@@ -106,14 +122,10 @@ void Foam::RBD::couplingSchemes::quasiNewton::correct
         }
     }
 
-    // a = aGiven - Jinv r
+    // a = aGiven - Jinv r, JinvDr_ the scratch for Jinv r
+    matrixVector(Jinv_, rPrev_, JinvDr_);
     forAll(a, i)
     {
-        scalar Jr = 0;
-        for (label j = 0; j < n; ++j)
-        {
-            Jr += Jinv_(i, j)*rPrev_[j];
-        }
-        a[i] = aGiven[i] - Jr;
+        a[i] = aGiven[i] - JinvDr_[i];
     }
 }

@@ -1,4 +1,24 @@
 /*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+-------------------------------------------------------------------------------
     catenaryLine: a quasi-static mooring line (catenaryLine.H)
 \*---------------------------------------------------------------------------*/
 
@@ -147,7 +167,9 @@ Foam::RBD::restraints::catenaryLine::catenaryLine
     nShapePoints_(51),
     fairlead_(Zero),
     across_(1, 0, 0),
-    up_(0, 0, 1)
+    up_(0, 0, 1),
+    hasCommitted_(false),
+    committed_(line_)
 {
     read(dict);
 }
@@ -175,6 +197,52 @@ void Foam::RBD::restraints::catenaryLine::restrain
 {
     fairlead_ = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
     addForce(fx, fairlead_, solve(line_, fairlead_, across_));
+
+    // The first evaluation makes the initial committed state
+    if (!hasCommitted_)
+    {
+        commitLatest();
+    }
+}
+
+
+void Foam::RBD::restraints::catenaryLine::commitLatest() const
+{
+    committed_ = line_;
+    hasCommitted_ = true;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::commit
+(
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    // The latest solve is the committed one if it was for this fairlead;
+    // else the line is solved for it from there (the trial left as it is)
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
+    if (p == fairlead_)
+    {
+        commitLatest();
+        return;
+    }
+    committed_ = line_;
+    vector across(across_);
+    solve(committed_, p, across);
+    hasCommitted_ = true;
+}
+
+
+void Foam::RBD::restraints::catenaryLine::describe
+(
+    const rigidBodyModelWorkspace& ws,
+    restraintReport& report
+) const
+{
+    report.anchor = anchor_;
+    report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
+    report.line.reset(new elasticCatenary(line_));
 }
 
 
@@ -190,26 +258,15 @@ Foam::tensor Foam::RBD::restraints::catenaryLine::forceGradient() const
 }
 
 
-Foam::wordList Foam::RBD::restraints::catenaryLine::tableColumns() const
+void Foam::RBD::restraints::catenaryLine::addColumns(tableRow& row) const
 {
-    return wordList
-    {
-        name_ + ".tension",
-        name_ + ".groundedLength",
-        name_ + ".fairleadAngle"
-    };
-}
-
-
-void Foam::RBD::restraints::catenaryLine::tableValues
-(
-    scalarField& row,
-    label& k
-) const
-{
-    row[k++] = line_.tension();
-    row[k++] = line_.groundedLength();
-    row[k++] = radToDeg(atan2(line_.V(), line_.H()));
+    row.add(name_ + ".tension", committed_.tension());
+    row.add(name_ + ".groundedLength", committed_.groundedLength());
+    row.add
+    (
+        name_ + ".fairleadAngle",
+        radToDeg(atan2(committed_.V(), committed_.H()))
+    );
 }
 
 

@@ -1,3 +1,25 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "externalForce.H"
 #include "rigidBodyEntries.H"
 #include "rigidBodyModel.H"
@@ -14,7 +36,8 @@ namespace restraints
     addToRunTimeSelectionTable(restraint, externalForce, dictionary);
     addRigidBodyKeywords
     (
-        restraint, externalForce, "location", "force", "forceCoeffs"
+        restraint, externalForce, "location", "force", "forceCoeffs",
+        "moment", "momentCoeffs", "locationFrame", "forceFrame"
     );
 }
 }
@@ -38,8 +61,31 @@ Foam::RBD::restraints::externalForce::externalForce(const externalForce& ef)
 :
     restraint(ef),
     location_(ef.location_),
-    force_(ef.force_->clone().ptr())
+    force_(ef.force_->clone().ptr()),
+    moment_(ef.moment_.valid() ? ef.moment_->clone().ptr() : nullptr),
+    bodyLocation_(ef.bodyLocation_),
+    bodyAxes_(ef.bodyAxes_)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::RBD::restraints::externalForce::readFrame
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const word frame(dict.getOrDefault<word>(key, "global"));
+    if (frame != "global" && frame != "body")
+    {
+        FatalIOErrorInFunction(dict.lookup(key))
+            << "Entry " << key << ' ' << frame << " in " << dict.dictName()
+            << ": valid frames are global and body" << nl
+            << exit(FatalIOError);
+    }
+    return frame == "body";
+}
 
 
 void Foam::RBD::restraints::externalForce::restrain
@@ -47,10 +93,31 @@ void Foam::RBD::restraints::externalForce::restrain
     scalarField&,
     Field<spatialVector>& fx,
     const rigidBodyModelState& state,
-    const rigidBodyModelWorkspace&
+    const rigidBodyModelWorkspace& ws
 ) const
 {
-    addForce(fx, location_, force_->value(state.t()));
+    const scalar t = state.t();
+    vector F(force_->value(t));
+    vector M(moment_.valid() ? moment_->value(t) : Zero);
+
+    vector p(location_);
+    if (bodyLocation_ || bodyAxes_)
+    {
+        const spatialTransform X(model_.X0(bodyID_, ws));
+        if (bodyLocation_)
+        {
+            p = model_.globalPointMotion(bodyID_, location_, ws).x;
+        }
+        if (bodyAxes_)
+        {
+            // Body axes to global: E maps global vectors to the body's
+            F = X.E().T() & F;
+            M = X.E().T() & M;
+        }
+    }
+
+    addForce(fx, p, F);
+    addMoment(fx, M);
 }
 
 
@@ -59,6 +126,13 @@ bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
     restraint::read(dict);
     location_ = dict.get<vector>("location");
     force_ = readFunction1<vector>(dict, "force");
+    moment_.clear();
+    if (dict.found("moment"))
+    {
+        moment_ = readFunction1<vector>(dict, "moment");
+    }
+    bodyLocation_ = readFrame(dict, "locationFrame");
+    bodyAxes_ = readFrame(dict, "forceFrame");
     return true;
 }
 
@@ -68,4 +142,10 @@ void Foam::RBD::restraints::externalForce::write(Ostream& os) const
     restraint::write(os);
     os.writeEntry("location", location_);
     force_->writeData(os);
+    if (moment_.valid())
+    {
+        moment_->writeData(os);
+    }
+    os.writeEntry("locationFrame", word(bodyLocation_ ? "body" : "global"));
+    os.writeEntry("forceFrame", word(bodyAxes_ ? "body" : "global"));
 }

@@ -1,5 +1,28 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
 #include "linearSpring.H"
 #include "rigidBodyEntries.H"
+#include "restraintReport.H"
 #include "rigidBodyModel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "keywordTable.H"
@@ -15,8 +38,8 @@ namespace restraints
     addToRunTimeSelectionTable(restraint, linearSpring, dictionary);
     addRigidBodyKeywords
     (
-        restraint, linearSpring, "anchor", "refAttachmentPt", "stiffness",
-        "damping", "restLength"
+        restraint, linearSpring, "anchor", "anchorBody", "refAttachmentPt",
+        "stiffness", "damping", "restLength"
     );
 }
 }
@@ -49,7 +72,20 @@ void Foam::RBD::restraints::linearSpring::restrain
         model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
     );
     const vector& p = pm.x;
-    const vector r(p - anchor_);
+
+    // The anchor: fixed, or a point of the anchor body
+    vector a(anchor_), aDot(Zero);
+    if (anchorBodyID_ >= 0)
+    {
+        const rigidBodyModel::pointMotion am
+        (
+            model_.globalPointMotion(anchorBodyID_, anchor_, ws)
+        );
+        a = am.x;
+        aDot = am.v;
+    }
+
+    const vector r(p - a);
     const scalar L = mag(r);
 
     if (L < VSMALL)
@@ -58,9 +94,14 @@ void Foam::RBD::restraints::linearSpring::restrain
     }
 
     const vector dir(r/L);
-    const scalar LDot = dir & pm.v;
+    const scalar LDot = dir & (pm.v - aDot);
+    const vector F(-(stiffness_*(L - restLength_) + damping_*LDot)*dir);
 
-    addForce(fx, p, -(stiffness_*(L - restLength_) + damping_*LDot)*dir);
+    addForce(fx, p, F);
+    if (anchorBodyID_ >= 0)
+    {
+        fx[anchorMasterID_] += spatialVector(a ^ -F, -F);
+    }
 }
 
 
@@ -72,11 +113,24 @@ Foam::scalar Foam::RBD::restraints::linearSpring::naturalPeriod() const
 }
 
 
+void Foam::RBD::restraints::linearSpring::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
+{
+    report.otherBodyID = anchorBodyID_;
+}
+
+
 bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
 {
     restraint::read(dict);
 
     anchor_ = dict.get<vector>("anchor");
+    anchorBodyID_ = readAnchorBody(dict);
+    anchorMasterID_ =
+        anchorBodyID_ >= 0 ? model_.masterID(anchorBodyID_) : -1;
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
     stiffness_ = readNonNegative(dict, "stiffness");
     damping_ = readNonNegative(dict, "damping");
@@ -90,6 +144,10 @@ void Foam::RBD::restraints::linearSpring::write(Ostream& os) const
 {
     restraint::write(os);
     os.writeEntry("anchor", anchor_);
+    if (anchorBodyID_ >= 0)
+    {
+        os.writeEntry("anchorBody", model_.name(anchorBodyID_));
+    }
     os.writeEntry("refAttachmentPt", refAttachmentPt_);
     os.writeEntry("stiffness", stiffness_);
     os.writeEntry("damping", damping_);

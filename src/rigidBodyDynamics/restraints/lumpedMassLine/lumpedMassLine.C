@@ -1,4 +1,24 @@
 /*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+-------------------------------------------------------------------------------
     lumpedMassLine: a dynamic mooring line (lumpedMassLine.H)
 \*---------------------------------------------------------------------------*/
 
@@ -100,7 +120,9 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     anchor_(Zero),
     refAttachmentPt_(Zero),
     props_(),
-    writeShape_(true)
+    writeShape_(true),
+    committedTension_(0),
+    committedAnchorTension_(0)
 {
     read(dict);
 }
@@ -117,7 +139,9 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     props_(l.props_),
     writeShape_(l.writeShape_),
     line_(l.line_ ? new lumpedLine(*l.line_) : nullptr),
-    pendingState_(l.pendingState_)
+    pendingState_(l.pendingState_),
+    committedTension_(l.committedTension_),
+    committedAnchorTension_(l.committedAnchorTension_)
 {}
 
 
@@ -138,7 +162,7 @@ void Foam::RBD::restraints::lumpedMassLine::restrain
 }
 
 
-void Foam::RBD::restraints::lumpedMassLine::newTime
+void Foam::RBD::restraints::lumpedMassLine::commit
 (
     const rigidBodyModelState& state,
     const rigidBodyModelWorkspace& ws
@@ -148,6 +172,42 @@ void Foam::RBD::restraints::lumpedMassLine::newTime
     lumpedLine& l = line(state.t(), p, ws);
     l.advance(state.t(), p);
     l.commit();
+    committedTension_ = l.tension(props_.N - 1);
+    committedAnchorTension_ = l.tension(0);
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::describe
+(
+    const rigidBodyModelWorkspace& ws,
+    restraintReport& report
+) const
+{
+    using constant::mathematical::pi;
+    const lumpedLine::properties& p = props_;
+    const vector up(mag(p.g) > VSMALL ? -p.g/mag(p.g) : vector(0, 0, 1));
+
+    elasticCatenary::properties cp;
+    cp.L = p.L;
+    cp.w = max((p.mu - p.rho*0.25*pi*sqr(p.d))*mag(p.g), scalar(0));
+    cp.EA = p.EA;
+    cp.CB = 0;
+    cp.grounded =
+        p.hasSeabed && mag((anchor_ & up) - p.seabed) <= 1e-6*p.L;
+
+    report.anchor = anchor_;
+    report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
+    report.line.reset(new elasticCatenary(cp));
+
+    // The transverse period at the catenary's tension there
+    elasticCatenary solved(cp);
+    solved.fairleadForce(report.anchor, report.fairlead, up);
+    const scalar A = 0.25*pi*sqr(p.d);
+    const scalar T0 = solved.tension();
+    report.axialPeriod = 2*p.L/sqrt(p.EA/p.mu);
+    report.transversePeriod =
+        T0 > 0 ? 2*p.L/sqrt(T0/(p.mu + p.rho*A*p.Can)) : GREAT;
+    report.maxSubStep = line_ ? line_->maxSubStep() : 0;
 }
 
 
@@ -175,20 +235,10 @@ void Foam::RBD::restraints::lumpedMassLine::readState(const dictionary& dict)
 }
 
 
-Foam::wordList Foam::RBD::restraints::lumpedMassLine::tableColumns() const
+void Foam::RBD::restraints::lumpedMassLine::addColumns(tableRow& row) const
 {
-    return wordList{name_ + ".tension", name_ + ".anchorTension"};
-}
-
-
-void Foam::RBD::restraints::lumpedMassLine::tableValues
-(
-    scalarField& row,
-    label& k
-) const
-{
-    row[k++] = line_ ? line_->tension(props_.N - 1) : 0;
-    row[k++] = line_ ? line_->tension(0) : 0;
+    row.add(name_ + ".tension", committedTension_);
+    row.add(name_ + ".anchorTension", committedAnchorTension_);
 }
 
 
