@@ -531,23 +531,13 @@ void Foam::RBD::rigidBodyDriver::checkState()
 }
 
 
-void Foam::RBD::rigidBodyDriver::stepFailed(const string& what)
+void Foam::RBD::rigidBodyDriver::restraintCauses(OStringStream& causes)
 {
-    floatingPointTraps traps;
-
-    // Back to the start of the step, the last state that was finite, with
-    // no row or coupling report of the failed step due (where FatalError
-    // throws, as in a test, the driver can go on from there)
-    motion_.state() = motion_.state0();
-    rowsPending_ = false;
-    curTimeIndex_ = -1;
     const rigidBodyModelState& state = motion_.state();
     const scalar deltaT = time_.deltaTValue();
 
-    OStringStream causes;
-
-    // Restraints whose force is not finite at the start of the step, and
-    // the three largest of the others
+    // Restraints whose force is not finite at the state, and the three
+    // largest of the others
     const PtrList<restraint>& restraints = motion_.restraints();
     const rigidBodyModelWorkspace& ws = motion_.workspace();
     scalarField tau(model().nDoF());
@@ -605,6 +595,23 @@ void Foam::RBD::rigidBodyDriver::stepFailed(const string& what)
                 << " lists every period)" << nl;
         }
     }
+}
+
+
+void Foam::RBD::rigidBodyDriver::stepFailed(const string& what)
+{
+    floatingPointTraps traps;
+
+    // Back to the start of the step, the last state that was finite, with
+    // no row or coupling report of the failed step due (where FatalError
+    // throws, as in a test, the driver can go on from there)
+    motion_.state() = motion_.state0();
+    rowsPending_ = false;
+    curTimeIndex_ = -1;
+    const rigidBodyModelState& state = motion_.state();
+
+    OStringStream causes;
+    restraintCauses(causes);
 
     // Numbers of extreme magnitude in the coefficients
     extremeEntries(coeffs_, string::null, causes);

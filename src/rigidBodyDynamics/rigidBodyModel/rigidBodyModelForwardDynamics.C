@@ -22,8 +22,11 @@ License
 Description
     Forward dynamics by the articulated-body algorithm, after
     Featherstone, Rigid Body Dynamics Algorithms (2008), table 7.1: the
-    articulated inertias and bias forces from the leaves to the root, then
-    the joint accelerations from the root to the leaves.
+    kinematics from the root to the leaves (each body's transform from its
+    parent, velocity and velocity product; its transform from the root on
+    demand), the articulated inertias and bias forces from the leaves to
+    the root, then the joint accelerations from the root to the leaves.
+    The other algorithms start from the same kinematics.
 
     A free body (a floating joint: a massless body on Pxyz from the root,
     then the body on a rotational joint) is one joint of six degrees of
@@ -42,6 +45,98 @@ using namespace Foam::RBD::spatialKernels;
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyModel::kinematics
+(
+    const rigidBodyModelState& state,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    const scalarField& q = state.q();
+    const scalarField& qDot = state.qDot();
+
+    ws.v[0] = Zero;
+    ws.X0valid = false;
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        joint::XSvc& J = ws.J[i];
+        joints_[i].jcalc(J, q, qDot);
+
+        const label p = lambda_[i];
+        spatialTransform& Xlambda = ws.Xlambda[i];
+
+        // Xlambda = XJ XT: a product of rotations only if XT rotates
+        if (XTrotates_[i])
+        {
+            Xlambda = J.X & XT_[i];
+        }
+        else
+        {
+            Xlambda.E() = J.X.E();
+            Xlambda.r() = XT_[i].r() + J.X.r();
+        }
+
+        ws.v[i] =
+            p
+          ? transformMotion(Xlambda, XlambdaRotation(i), ws.v[p]) + J.v
+          : J.v;
+        ws.c[i] =
+            velocityProduct
+            (
+                J,
+                joints_[i].unitColumn(),
+                joints_[i].nDoF(),
+                ws.v[i]
+            );
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::updateX0
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    if (!ws.X0valid)
+    {
+        fillX0(ws);
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::fillX0
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    // X0 = Xlambda X0[parent]: a copy and a sum where the parent's X0 only
+    // shifts (the root's: ws.X0[0] stays the identity) or Xlambda does
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        const label p = lambda_[i];
+        const spatialTransform& Xl = ws.Xlambda[i];
+        const spatialTransform& Xp = ws.X0[p];
+        spatialTransform& X = ws.X0[i];
+
+        if (!X0rotates_[p])
+        {
+            X.E() = Xl.E();
+            X.r() = Xp.r() + Xl.r();
+        }
+        else if (XlambdaRotation(i) == 3)
+        {
+            X.E() = Xp.E();
+            X.r() = Xp.r() + (Xl.r() & Xp.E());
+        }
+        else
+        {
+            X = Xl & Xp;
+        }
+    }
+    ws.X0valid = true;
+}
+
 
 void Foam::RBD::rigidBodyModel::articulatedBodyDynamics
 (

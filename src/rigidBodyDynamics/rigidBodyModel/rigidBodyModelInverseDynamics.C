@@ -22,8 +22,9 @@ License
 Description
     Inverse dynamics by the recursive Newton-Euler algorithm, after
     Featherstone, Rigid Body Dynamics Algorithms (2008), table 5.1: the
-    forces each body needs for its acceleration, then the joint forces
-    from the leaves to the root.
+    bodies' accelerations from the root to the leaves, the forces each
+    body needs for them, then the joint forces from the leaves to the
+    root.
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
@@ -33,6 +34,33 @@ using namespace Foam::RBD::spatialKernels;
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyModel::bodyAccelerations
+(
+    const scalarField& qDdot,
+    rigidBodyModelWorkspace& ws
+) const
+{
+    ws.a[0] = spatialVector(Zero, -g_);
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        const joint::XSvc& J = ws.J[i];
+        const label qi = joints_[i].qIndex();
+
+        const spatialVector& ap = ws.a[lambda_[i]];
+        spatialVector a
+        (
+            transformMotion(ws.Xlambda[i], XlambdaRotation(i), ap) + ws.c[i]
+        );
+        for (label k = 0; k < joints_[i].nDoF(); ++k)
+        {
+            a += J.S[k]*qDdot[qi + k];
+        }
+        ws.a[i] = a;
+    }
+}
+
 
 void Foam::RBD::rigidBodyModel::inverseDynamics
 (
