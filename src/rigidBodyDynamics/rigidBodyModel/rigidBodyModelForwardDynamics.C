@@ -35,7 +35,7 @@ Description
     nothing on it the inverse is the model's, made once), and the joints'
     accelerations follow from it; nothing passes to the root.  The same
     answer as the two joints one after the other, for about a quarter of
-    the instructions (callgrind, docs/performance.md).
+    the instructions (callgrind, bench/README.md).
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
