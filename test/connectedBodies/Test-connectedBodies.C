@@ -61,6 +61,13 @@ Description
     global axes at a global point, add up to the force and moment about
     the origin computed from the body's transform, to 1e-12.
 
+    prescribedJointMotion: a carrier heaved as 0.1 sin(2 pi 0.7 t) m on Pz,
+    a pendulum hanging free from it on Ry, gravity, Newmark, 3 s: the heave
+    is the sine at every step to 1e-12 of its amplitude, its rate to 1e-6
+    (central differences); the driving force equals the inverse dynamics of
+    the state to 1e-9 of its largest value, and the pendulum's joint needs
+    none.
+
 \*---------------------------------------------------------------------------*/
 
 #include "testCheck.H"
@@ -440,6 +447,83 @@ void externalForceFrames()
     );
 }
 
+//- A heave prescribed as a sine, with a pendulum hanging free from the
+//  heaving body: the joint follows the Function1, and its driving force
+//  is the inverse dynamics of the motion
+void prescribedHeave()
+{
+    const scalar A = 0.1, f = 0.7, w = 2*pi*f;
+    const std::string text =
+        "solver { type Newmark; } g (0 0 -9.81);"
+        "q (0 0.3); qDot (" + std::to_string(A*w) + " 0);"
+        "bodies {"
+        " carrier { type rigidBody; parent root; mass 3;"
+        " centreOfMass (0 0 0); inertia (0.1 0 0 0.1 0 0.1);"
+        " transform (1 0 0 0 1 0 0 0 1) (0 0 0); joint { type Pz; } }"
+        " bob { type rigidBody; parent carrier; mass 1;"
+        " centreOfMass (0 0 -0.5); inertia (0.01 0 0 0.01 0 0.01);"
+        " transform (1 0 0 0 1 0 0 0 1) (0 0 0); joint { type Ry; } } }"
+        "restraints { heave { type prescribedJointMotion; body carrier;"
+        " position sine; positionCoeffs { amplitude " + std::to_string(A)
+      + "; frequency " + std::to_string(f) + "; scale 1; level 0; } } }";
+
+    autoPtr<RBD::rigidBodyMotion> mo(test::motion(text));
+    const RBD::rigidBodyModel& model = mo->model();
+    RBD::rigidBodyModelWorkspace ws(model);
+    scalarField tau(model.nDoF(), Zero);
+    const Field<spatialVector> fx(model.nBodies(), Zero);
+
+    scalar worstQ = 0, worstQDot = 0, worstForce = 0, worstFree = 0;
+    scalar maxForce = 0, maxSwing = 0;
+    test::run
+    (
+        mo(), 1e-3, 3000,
+        [&](RBD::rigidBodyMotion& m)
+        {
+            const scalar t = m.state().t();
+            worstQ = max(worstQ, mag(m.state().q()[0] - A*Foam::sin(w*t)));
+            worstQDot = max
+            (
+                worstQDot,
+                mag(m.state().qDot()[0] - A*w*Foam::cos(w*t))
+            );
+            model.inverseDynamics(m.state(), ws, fx, tau);
+            const scalar force = m.prescriptions()[0].moment;
+            worstForce = max(worstForce, mag(force - tau[0]));
+            worstFree = max(worstFree, mag(tau[1]));
+            maxForce = max(maxForce, mag(force));
+            maxSwing = max(maxSwing, mag(m.state().q()[1]));
+        }
+    );
+
+    checkAbs
+    (
+        worstQ/A, 0, 1e-12,
+        "prescribedJointMotion: the heave follows 0.1 sin(2 pi 0.7 t) at"
+        " every step of 3 s, over the amplitude"
+    );
+    checkAbs
+    (
+        worstQDot/(A*w), 0, 1e-6,
+        "... and its rate the sine's derivative (central differences),"
+        " over the rate's amplitude"
+    );
+    checkAbs
+    (
+        worstForce/maxForce, 0, 1e-9,
+        "... its driving force is the inverse dynamics of the motion, the"
+        " pendulum swinging on it (largest " + std::to_string(maxForce)
+      + " N), over the largest"
+    );
+    check
+    (
+        worstFree <= 1e-9*maxForce && maxSwing > 0.2,
+        "... and the free pendulum needs no force of its own (inverse"
+        " dynamics " + std::to_string(worstFree) + " N m); it swings to "
+      + std::to_string(maxSwing) + " rad"
+    );
+}
+
 } // End namespace connectedBodiesTest
 
 
@@ -451,6 +535,7 @@ int main(int argc, char *argv[])
     energyBalance();
     twoBodySpring();
     externalForceFrames();
+    prescribedHeave();
 
     return test::testResult();
 }

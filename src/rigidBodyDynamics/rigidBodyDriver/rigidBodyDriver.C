@@ -286,6 +286,19 @@ void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
             r.addColumns(row);
         }
     }
+
+    // A prescribed joint's driving force: in a forced oscillation, what the
+    // fluid and the body's own inertia take
+    const labelList& prescribing = motion_.prescribing();
+    forAll(prescribing, s)
+    {
+        const restraint& r = motion_.restraints()[prescribing[s]];
+        const rateConstraint& c = motion_.prescriptions()[s];
+        if (c.dof >= 0 && r.bodyID() == id)
+        {
+            row.add(r.name() + ".force", c.moment);
+        }
+    }
     row.end();
 }
 
@@ -878,6 +891,15 @@ void Foam::RBD::rigidBodyDriver::status(const label bodyID)
         if (r.bodyID() == bodyID)
         {
             const rateConstraint& c = motion_.prescriptions()[s];
+            if (c.dof >= 0)
+            {
+                Info<< "    Prescribed motion " << r.name() << ": q "
+                    << motion_.state().q()[c.dof] << " (prescribed "
+                    << c.position << "), qDot "
+                    << motion_.state().qDot()[c.dof] << " (prescribed "
+                    << c.rate << "), driving force " << c.moment << endl;
+                continue;
+            }
             Info<< "    Prescribed rotation " << r.name() << ": omega "
                 << (c.axis & vCofR.w()) << " rad/s about " << c.axis
                 << " (prescribed " << c.rate << "), motor moment "

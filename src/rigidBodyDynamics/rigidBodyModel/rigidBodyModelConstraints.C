@@ -39,9 +39,14 @@ using namespace Foam::RBD::spatialKernels;
 Foam::scalar Foam::RBD::rigidBodyModel::rate
 (
     const rateConstraint& c,
+    const scalarField& qDot,
     const rigidBodyModelWorkspace& ws
 ) const
 {
+    if (c.dof >= 0)
+    {
+        return qDot[c.dof];
+    }
     updateX0(ws);
     return (ws.X0[c.bodyID].E() & c.axis) & ws.v[c.bodyID].w();
 }
@@ -50,12 +55,20 @@ Foam::scalar Foam::RBD::rigidBodyModel::rate
 void Foam::RBD::rigidBodyModel::constraintResiduals
 (
     const UList<rateConstraint>& C,
+    const scalarField& qDdot,
     rigidBodyModelWorkspace& ws
 ) const
 {
     forAll(C, r)
     {
         const rateConstraint& c = C[r];
+        if (c.dof >= 0)
+        {
+            // A joint's prescribed acceleration (its position and rate are
+            // met at the end of each solve, constrainState)
+            ws.motorMoments[r] = c.acceleration - qDdot[c.dof];
+            continue;
+        }
         const vector e(ws.X0[c.bodyID].E() & c.axis);
         const scalar omega = e & ws.v[c.bodyID].w();
         ws.motorMoments[r] =
@@ -80,12 +93,19 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
         // in the bias forces
         ws.responseBias = Zero;
         const rateConstraint& cs = C[s];
-        ws.responseBias[cs.bodyID] =
-            spatialVector(-(ws.X0[cs.bodyID].E() & cs.axis), Zero);
-        if (cs.parentID)
+
+        // A joint's motor is a unit force of the joint itself (added to its
+        // share u below); a rotation's, a unit moment about the axis
+        const label motorJoint = cs.dof >= 0 ? cs.bodyID : -1;
+        if (cs.dof < 0)
         {
-            ws.responseBias[cs.parentID] =
-                spatialVector(ws.X0[cs.parentID].E() & cs.axis, Zero);
+            ws.responseBias[cs.bodyID] =
+                spatialVector(-(ws.X0[cs.bodyID].E() & cs.axis), Zero);
+            if (cs.parentID)
+            {
+                ws.responseBias[cs.parentID] =
+                    spatialVector(ws.X0[cs.parentID].E() & cs.axis, Zero);
+            }
         }
 
         // Articulated bias forces of the response, leaves to root: as in
@@ -118,7 +138,7 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
             if (Ji.unitColumn() >= 0 && n == 1)
             {
                 // U is Xlambda^T U: the parent's share is taken whole
-                u.x() = -pa[Ji.unitColumn()];
+                u.x() = -pa[Ji.unitColumn()] + (i == motorJoint ? 1 : 0);
                 if (p)
                 {
                     ws.responseBias[p] +=
@@ -131,6 +151,10 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
             for (label j = 0; j < n; ++j)
             {
                 u[j] = -(ws.J[i].S[j] && pa);
+            }
+            if (i == motorJoint)
+            {
+                u[cs.dof - Ji.qIndex()] += 1;
             }
             const vector Dinvu(ws.Dinv[i] & u);
             for (label j = 0; j < n; ++j)
@@ -149,8 +173,10 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
         forAll(C, r)
         {
             const rateConstraint& cr = C[r];
-            ws.constraintMatrix(r, s) =
-                (ws.X0[cr.bodyID].E() & cr.axis) & ws.responseAcceleration[cr.bodyID].w();
+            ws.constraintMatrix(r, s) = cr.dof >= 0
+              ? ws.responseQDdot[s][cr.dof]
+              : (ws.X0[cr.bodyID].E() & cr.axis)
+              & ws.responseAcceleration[cr.bodyID].w();
         }
     }
 }
@@ -213,6 +239,17 @@ void Foam::RBD::rigidBodyModel::unmetConstraint
     const rigidBodyModelWorkspace& ws
 ) const
 {
+    if (C[k].dof >= 0)
+    {
+        FatalErrorInFunction
+            << "The prescribed motion of degree of freedom " << C[k].dof
+            << " (the joint of body " << bodies_[C[k].bodyID].name()
+            << ") cannot be met: another prescription already fixes it"
+            << " (the response of the prescriptions to the motors' forces"
+            << " is singular: " << ws.constraintMatrix << ")"
+            << exit(FatalError);
+    }
+
     FatalErrorInFunction
         << "The prescribed rotation of body "
         << bodies_[C[k].bodyID].name() << " about " << C[k].axis
@@ -262,7 +299,7 @@ void Foam::RBD::rigidBodyModel::constrainedDynamics
     // The motors' moments: what each constraint asks less what the body's
     // acceleration is without them, through the responses to unit moments
     updateX0(ws);
-    constraintResiduals(C, ws);
+    constraintResiduals(C, qDdot, ws);
     unitMotorResponses(C, ws);
     solveConstraints(C, ws);
 
@@ -293,12 +330,21 @@ void Foam::RBD::rigidBodyModel::constrainState
 (
     rigidBodyModelState& state,
     rigidBodyModelWorkspace& ws,
-    const UList<rateConstraint>& C
+    UList<rateConstraint>& C
 ) const
 {
     if (C.empty())
     {
         return;
+    }
+
+    // A joint's prescribed position, met exactly: its q alone moves
+    forAll(C, r)
+    {
+        if (C[r].dof >= 0)
+        {
+            state.q()[C[r].dof] = C[r].position;
+        }
     }
 
     // The responses to the motors' unit moments (they depend on the
@@ -308,7 +354,7 @@ void Foam::RBD::rigidBodyModel::constrainState
     // The motors' impulses that bring the rates to the constraints'
     forAll(C, r)
     {
-        ws.motorMoments[r] = C[r].rate - rate(C[r], ws);
+        ws.motorMoments[r] = C[r].rate - rate(C[r], state.qDot(), ws);
     }
     solveConstraints(C, ws);
 
@@ -319,10 +365,19 @@ void Foam::RBD::rigidBodyModel::constrainState
     kinematics(state, ws);
     bodyAccelerations(state.qDdot(), ws);
     updateX0(ws);
-    constraintResiduals(C, ws);
+    constraintResiduals(C, state.qDdot(), ws);
     solveConstraints(C, ws);
 
     addResponses(ws, state.qDdot());
+
+    // A joint's driving force: with the change that meets its acceleration
+    forAll(C, r)
+    {
+        if (C[r].dof >= 0)
+        {
+            C[r].moment += ws.motorMoments[r];
+        }
+    }
 }
 
 

@@ -158,6 +158,26 @@ void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
     forAll(prescriptions_, s)
     {
         const rateConstraint& c = prescriptions_[s];
+
+        // A joint's degree of freedom prescribed twice
+        if (c.dof >= 0)
+        {
+            for (label r = 0; r < s; ++r)
+            {
+                if (prescriptions_[r].dof == c.dof)
+                {
+                    const restraint& rr = restraints_[prescribing_[r]];
+                    const restraint& rs = restraints_[prescribing_[s]];
+                    FatalIOErrorInFunction(dict.subDict("restraints"))
+                        << "Restraints " << rr.name() << " and "
+                        << rs.name() << " both prescribe the joint of body "
+                        << model_.name(rs.bodyID()) << ": give it one"
+                        << " prescription." << nl << exit(FatalIOError);
+                }
+            }
+            continue;
+        }
+
         const rigidBodyInertia& body = model_.bodies()[c.bodyID];
         const vector e(model_.X0(c.bodyID, ws_).E() & c.axis);
         const scalar Ia = e & (body.Ic() & e);
@@ -185,7 +205,11 @@ void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
         for (label r = 0; r < s; ++r)
         {
             const rateConstraint& cr = prescriptions_[r];
-            if (cr.bodyID == c.bodyID && mag(cr.axis ^ c.axis) < 1e-9)
+            if
+            (
+                cr.dof < 0 && cr.bodyID == c.bodyID
+             && mag(cr.axis ^ c.axis) < 1e-9
+            )
             {
                 const restraint& rr = restraints_[prescribing_[r]];
                 const restraint& rs = restraints_[prescribing_[s]];
