@@ -26,7 +26,7 @@ License
 
 Foam::boolList Foam::RBD::rotationDoFs(const rigidBodyModel& model)
 {
-    boolList rotation(model.nDoF(), false);
+    boolList turns(model.nDoF(), false);
     const scalarField q(model.nDoF(), Zero);
     const scalarField qDot(model.nDoF(), Zero);
 
@@ -40,18 +40,18 @@ Foam::boolList Foam::RBD::rotationDoFs(const rigidBodyModel& model)
         J.jcalc(xsvc, q, qDot);
         for (label k = 0; k < J.nDoF(); ++k)
         {
-            rotation[J.qIndex() + k] = mag(xsvc.S[k].w()) > SMALL;
+            turns[J.qIndex() + k] = mag(xsvc.S[k].w()) > SMALL;
         }
     }
 
-    return rotation;
+    return turns;
 }
 
 
 Foam::scalarField Foam::RBD::dofLengths(const rigidBodyModel& model)
 {
     const label nb = model.nBodies();
-    const boolList rotation(rotationDoFs(model));
+    const boolList turns(rotationDoFs(model));
 
     // Mass carried by each body's joint: its own and its descendants'
     scalarField carried(nb, Zero);
@@ -64,24 +64,24 @@ Foam::scalarField Foam::RBD::dofLengths(const rigidBodyModel& model)
         }
     }
 
-    rigidBodyModelState state(model.nDoF());
-    rigidBodyModelWorkspace ws(model);
-    scalarSquareMatrix H(model.nDoF(), Zero);
-    model.massMatrix(state, ws, H);
+    rigidBodyModelState atRest(model.nDoF());
+    rigidBodyModelWorkspace restWorkspace(model);
+    scalarSquareMatrix M(model.nDoF(), Zero);
+    model.massMatrix(atRest, restWorkspace, M);
 
-    scalarField l(model.nDoF(), 1.0);
+    scalarField length(model.nDoF(), 1.0);
     for (label i = 1; i < nb; ++i)
     {
         const joint& J = model.joints()[i];
         for (label k = 0; k < J.nDoF(); ++k)
         {
             const label dof = J.qIndex() + k;
-            if (rotation[dof] && carried[i] > 0 && H(dof, dof) > 0)
+            if (turns[dof] && carried[i] > 0 && M(dof, dof) > 0)
             {
-                l[dof] = Foam::sqrt(H(dof, dof)/carried[i]);
+                length[dof] = Foam::sqrt(M(dof, dof)/carried[i]);
             }
         }
     }
 
-    return l;
+    return length;
 }
