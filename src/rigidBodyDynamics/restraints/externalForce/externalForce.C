@@ -100,20 +100,16 @@ void Foam::RBD::restraints::externalForce::restrain
     vector F(force_->value(t));
     vector M(moment_.valid() ? moment_->value(t) : Zero);
 
-    vector p(location_);
-    if (bodyLocation_ || bodyAxes_)
+    const vector p
+    (
+        bodyLocation_ ? model_.globalPoint(bodyID_, location_, ws) : location_
+    );
+    if (bodyAxes_)
     {
-        const spatialTransform X(model_.X0(bodyID_, ws));
-        if (bodyLocation_)
-        {
-            p = model_.globalPointMotion(bodyID_, location_, ws).x;
-        }
-        if (bodyAxes_)
-        {
-            // Body axes to global: E maps global vectors to the body's
-            F = X.E().T() & F;
-            M = X.E().T() & M;
-        }
+        // Body axes to global: E maps global vectors to the body's
+        const tensor Et(model_.X0(bodyID_, ws).E().T());
+        F = Et & F;
+        M = Et & M;
     }
 
     addForce(fx, p, F);
