@@ -64,18 +64,13 @@ MASS = 7.056            # [kg]
 RHO_V = RHO*2.0/3.0*math.pi*A_SPHERE**3     # 7.0559 kg
 C = RHO*G*math.pi*A_SPHERE**2               # 692.9 N/m
 
-# Hulme (1982), heave: K a, mu, lambda
-HULME = [
-    (0.0, 0.8310, 0.0000), (0.05, 0.8764, 0.1036), (0.1, 0.8627, 0.1816),
-    (0.2, 0.7938, 0.2793), (0.3, 0.7157, 0.3254), (0.4, 0.6452, 0.3410),
-    (0.5, 0.5861, 0.3391), (0.6, 0.5381, 0.3271), (0.7, 0.4999, 0.3098),
-    (0.8, 0.4698, 0.2899), (0.9, 0.4464, 0.2691), (1.0, 0.4284, 0.2484),
-    (1.2, 0.4047, 0.2096), (1.4, 0.3924, 0.1756), (1.6, 0.3871, 0.1469),
-    (1.8, 0.3864, 0.1229), (2.0, 0.3884, 0.1031), (2.5, 0.3988, 0.0674),
-    (3.0, 0.4111, 0.0452), (4.0, 0.4322, 0.0219), (5.0, 0.4471, 0.0116),
-    (6.0, 0.4574, 0.0066), (7.0, 0.4647, 0.0040), (8.0, 0.4700, 0.0026),
-    (9.0, 0.4740, 0.0017), (10.0, 0.4771, 0.0012),
-]
+# Hulme (1982), heave: K a, mu, lambda (the table beside the forced-heave
+# tutorial, which compares with it too)
+HULME_FILE = os.path.join(HERE, '..', '..', 'tutorials', 'interDyMFoam',
+                          'sphereForcedHeave', 'hulme1982.dat')
+with open(HULME_FILE) as f:
+    HULME = [tuple(float(v) for v in l.split()) for l in f
+             if l.strip() and not l.startswith('#')]
 MU_INF = 0.5
 
 # The experiment's figures (the tutorial's ./results): release [m],
