@@ -32,6 +32,7 @@ License
 #include "volFields.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
+#include "pimpleControl.H"
 
 namespace Foam
 {
@@ -432,7 +433,6 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     test_(coeffDict().getOrDefault<Switch>("test", false)),
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
-    addedMassTimeIndex_(-1),
     addedMassRamp_(-1),
     fx_(driver_.model().nBodies(), Zero)
 {
@@ -528,18 +528,19 @@ void Foam::rigidBodyMeshMotion::fluidForces()
 
 void Foam::rigidBodyMeshMotion::giveAddedMass()
 {
-    const label timeIndex = mesh().time().timeIndex();
-
+    // At the first solve of a step (and at the first after read())
     if
     (
         test_
      || !driver_.motion().coupling().usesFluidAddedMass()
-     || timeIndex == addedMassTimeIndex_
+     || (
+            addedMass_.valid()
+         && !driver_.step().isNew(mesh().time().timeIndex())
+        )
     )
     {
         return;
     }
-    addedMassTimeIndex_ = timeIndex;
 
     if (!addedMass_.valid())
     {
@@ -700,17 +701,33 @@ void Foam::rigidBodyMeshMotion::readResidualControl()
 }
 
 
+bool Foam::rigidBodyMeshMotion::lastSolve() const
+{
+    const Time& runTime = mesh().time();
+    if
+    (
+        runTime.value()
+      < runTime.endTime().value() - 0.5*runTime.deltaTValue()
+    )
+    {
+        return false;
+    }
+
+    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+    const bool moveMeshOuterCorrectors =
+        fvm.solutionDict().subOrEmptyDict("PIMPLE")
+       .getOrDefault<bool>("moveMeshOuterCorrectors", false);
+
+    return
+        fvm.lookupClass<pimpleControl>().empty()
+     || !moveMeshOuterCorrectors
+     || fvm.data::lookupOrDefault<bool>("finalIteration", false);
+}
+
+
 void Foam::rigidBodyMeshMotion::setSolverPerformance()
 {
-    // The step's 1st solve has the previous step's forces: never converged.
-    // Its 2nd has those of the fluid's 1st corrector, whose own fields have
-    // not converged, so the next corrector can still move the forces by
-    // more than the residual says: its residual counts twice, a margin
-    // that keeps PIMPLE from stopping on a residual that only looks small
-    const scalar r =
-        driver_.nCalls() == 1 ? GREAT
-      : driver_.nCalls() == 2 ? 2*driver_.residual().maxResidual()
-      : driver_.residual().maxResidual();
+    const scalar r = driver_.step().pimpleResidual();
 
     refCast<const fvMesh>(mesh()).setSolverPerformance
     (
@@ -832,6 +849,13 @@ void Foam::rigidBodyMeshMotion::solve()
             driver_.status(bodyMeshes_[bi].bodyID);
         }
     }
+
+    // The run's end: its last step committed (not in a destructor, where a
+    // FatalError would end in std::terminate)
+    if (lastSolve())
+    {
+        driver_.end();
+    }
 }
 
 
@@ -853,7 +877,6 @@ bool Foam::rigidBodyMeshMotion::read()
     {
         // A new coupling scheme: give it the added mass at the next step
         addedMass_.clear();
-        addedMassTimeIndex_ = -1;
         addedMassRamp_ = -1;
         residualField_.clear();
         return driver_.read(coeffDict());
