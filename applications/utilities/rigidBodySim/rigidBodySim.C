@@ -299,6 +299,9 @@ int main(int argc, char *argv[])
         }
     }
 
+    // The last step's rows, where they were not written at a write time
+    driver.end();
+
     const scalar wall = clock.elapsedTime();
 
     if (modelReport.valid())

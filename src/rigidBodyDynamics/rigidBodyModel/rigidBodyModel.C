@@ -85,6 +85,124 @@ Foam::label Foam::RBD::rigidBodyModel::addBody
 }
 
 
+bool Foam::RBD::rigidBodyModel::readBody
+(
+    const dictionary& bodiesDict,
+    const word& name
+)
+{
+    const dictionary& bodyDict = bodiesDict.subDict(name);
+
+    if (hasBody(name))
+    {
+        FatalIOErrorInFunction(bodyDict)
+            << "Body name " << name << " is already taken (names"
+            << " NAME_jointK belong to the frames of NAME's"
+            << " composite joint)" << nl
+            << exit(FatalIOError);
+    }
+
+    // With both, the merge wins, as in the stock library (whose
+    // own test dictionaries name the same body in both)
+    const bool merged = bodyDict.found("mergeWith");
+    if
+    (
+        merged
+     && bodyDict.found("parent")
+     && bodyDict.get<word>("parent")
+     != bodyDict.get<word>("mergeWith")
+    )
+    {
+        IOWarningInFunction(bodyDict)
+            << "Body " << name << " has parent "
+            << bodyDict.get<word>("parent") << " and mergeWith "
+            << bodyDict.get<word>("mergeWith") << ": it is merged"
+            << " with " << bodyDict.get<word>("mergeWith")
+            << " and parent is ignored, as the stock library does"
+            << endl;
+    }
+
+    const word parentKey(merged ? "mergeWith" : "parent");
+    const word parentName(bodyDict.get<word>(parentKey));
+
+    if (!hasBody(parentName))
+    {
+        return false;
+    }
+
+    spatialTransform XT
+    (
+        bodyDict.getOrDefault<spatialTransform>
+        (
+            "transform",
+            spatialTransform()
+        )
+    );
+    XT.E() = checkRotation(bodyDict, "transform", XT.E());
+
+    autoPtr<rigidBody> body(rigidBody::New(name, bodyDict));
+
+    if (merged)
+    {
+        if (bodyDict.found("joint"))
+        {
+            FatalIOErrorInFunction(bodyDict)
+                << "Body " << name << " is merged with "
+                << parentName << " and cannot have a joint" << nl
+                << exit(FatalIOError);
+        }
+        if (parentName == "root")
+        {
+            IOWarningInFunction(bodyDict)
+                << "Body " << name << " is merged with root: it"
+                << " never moves" << endl;
+        }
+        merge(bodyID(parentName), XT, std::move(body));
+    }
+    else
+    {
+        join
+        (
+            bodyID(parentName),
+            XT,
+            joint::New(bodyDict.subDict("joint")),
+            std::move(body)
+        );
+    }
+
+    return true;
+}
+
+
+void Foam::RBD::rigidBodyModel::noParent
+(
+    const dictionary& bodiesDict,
+    const wordList& waiting
+) const
+{
+    const dictionary& bodyDict = bodiesDict.subDict(waiting[0]);
+    const word parentKey
+    (
+        bodyDict.found("mergeWith") ? "mergeWith" : "parent"
+    );
+
+    const word parentName(bodyDict.get<word>(parentKey));
+
+    FatalIOErrorInFunction(bodyDict.lookup(parentKey))
+        << "Body " << waiting[0] << ": " << parentKey << ' '
+        << parentName
+        << (
+               bodiesDict.found(parentName)
+             ? " is a body that never reaches root: the parents"
+               " of the waiting bodies form a cycle"
+             : " is not a body of the model"
+           ) << nl
+        << "Bodies: " << bodyNames() << nl
+        << "(bodies waiting for a parent: " << waiting << ")" << nl
+        << exit(FatalIOError);
+}
+
+
 void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
 {
     dict.readIfPresent("g", g_);
@@ -101,116 +219,21 @@ void Foam::RBD::rigidBodyModel::readModel(const dictionary& dict)
 
         for (const word& name : pending)
         {
-            const dictionary& bodyDict = bodiesDict.subDict(name);
-
-            if (hasBody(name))
-            {
-                FatalIOErrorInFunction(bodyDict)
-                    << "Body name " << name << " is already taken (names"
-                    << " NAME_jointK belong to the frames of NAME's"
-                    << " composite joint)" << nl
-                    << exit(FatalIOError);
-            }
-
-            // With both, the merge wins, as in the stock library (whose
-            // own test dictionaries name the same body in both)
-            const bool merged = bodyDict.found("mergeWith");
-            if
-            (
-                merged
-             && bodyDict.found("parent")
-             && bodyDict.get<word>("parent")
-             != bodyDict.get<word>("mergeWith")
-            )
-            {
-                IOWarningInFunction(bodyDict)
-                    << "Body " << name << " has parent "
-                    << bodyDict.get<word>("parent") << " and mergeWith "
-                    << bodyDict.get<word>("mergeWith") << ": it is merged"
-                    << " with " << bodyDict.get<word>("mergeWith")
-                    << " and parent is ignored, as the stock library does"
-                    << endl;
-            }
-
-            const word parentKey(merged ? "mergeWith" : "parent");
-            const word parentName(bodyDict.get<word>(parentKey));
-
-            if (!hasBody(parentName))
+            if (!readBody(bodiesDict, name))
             {
                 waiting.append(name);
-                continue;
-            }
-
-            spatialTransform XT
-            (
-                bodyDict.getOrDefault<spatialTransform>
-                (
-                    "transform",
-                    spatialTransform()
-                )
-            );
-            XT.E() = checkRotation(bodyDict, "transform", XT.E());
-
-            autoPtr<rigidBody> body(rigidBody::New(name, bodyDict));
-
-            if (merged)
-            {
-                if (bodyDict.found("joint"))
-                {
-                    FatalIOErrorInFunction(bodyDict)
-                        << "Body " << name << " is merged with "
-                        << parentName << " and cannot have a joint" << nl
-                        << exit(FatalIOError);
-                }
-                if (parentName == "root")
-                {
-                    IOWarningInFunction(bodyDict)
-                        << "Body " << name << " is merged with root: it"
-                        << " never moves" << endl;
-                }
-                merge(bodyID(parentName), XT, std::move(body));
-            }
-            else
-            {
-                join
-                (
-                    bodyID(parentName),
-                    XT,
-                    joint::New(bodyDict.subDict("joint")),
-                    std::move(body)
-                );
             }
         }
 
         if (waiting.size() == pending.size())
         {
-            const dictionary& bodyDict = bodiesDict.subDict(waiting[0]);
-            const word parentKey
-            (
-                bodyDict.found("mergeWith") ? "mergeWith" : "parent"
-            );
-
-            const word parentName(bodyDict.get<word>(parentKey));
-
-            FatalIOErrorInFunction(bodyDict.lookup(parentKey))
-                << "Body " << waiting[0] << ": " << parentKey << ' '
-                << parentName
-                << (
-                       bodiesDict.found(parentName)
-                     ? " is a body that never reaches root: the parents"
-                       " of the waiting bodies form a cycle"
-                     : " is not a body of the model"
-                   ) << nl
-                << "Bodies: " << bodyNames() << nl
-                << "(bodies waiting for a parent: " << waiting << ")" << nl
-                << exit(FatalIOError);
+            noParent(bodiesDict, waiting);
         }
 
         pending.transfer(waiting);
     }
 
     checkMasses(bodiesDict);
-
 }
 
 

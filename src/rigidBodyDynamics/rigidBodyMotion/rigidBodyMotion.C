@@ -399,9 +399,9 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
         state0_.setQDdotValid(true);
         state_.qDdot() = state0_.qDdot();
         state_.setQDdotValid(true);
-        qDdot0Provisional_ = true;
+        step_.startProvisional();
     }
-    else if (qDdot0Provisional_)
+    else if (step_.provisionalStart())
     {
         if (externalForces_ && coupling_->relaxesStart())
         {
@@ -458,8 +458,7 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
     ws_(model_),
     wsValid_(false),
     nIter_(1),
-    nSolves_(0),
-    qDdot0Provisional_(false),
+    step_(),
     tauGiven_(model_.nDoF(), Zero),
     fxGiven_(model_.nBodies(), Zero),
     externalForces_(false),
@@ -532,14 +531,13 @@ void Foam::RBD::rigidBodyMotion::commitRestraints()
 }
 
 
-void Foam::RBD::rigidBodyMotion::newTime()
+void Foam::RBD::rigidBodyMotion::newTime(const label timeIndex)
 {
     // The restraints with states of their own start their step here
     commitRestraints();
 
     state0_ = state_;
-    nSolves_ = 0;
-    qDdot0Provisional_ = false;
+    step_.begin(timeIndex);
 }
 
 
@@ -572,8 +570,8 @@ void Foam::RBD::rigidBodyMotion::solve
 
     for (label iter = 0; iter < nIter_; ++iter)
     {
-        solver_->solve(state0_, state_, *this, nSolves_ == 0);
-        ++nSolves_;
+        solver_->solve(state0_, state_, *this, step_.firstSolve());
+        step_.solved();
 
         // The prescribed rates met at the end of the solve, whatever the
         // relaxation and the scheme left

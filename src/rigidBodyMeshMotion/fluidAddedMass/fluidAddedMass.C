@@ -164,6 +164,92 @@ void Foam::fluidAddedMass::jacobian
 }
 
 
+Foam::dictionary Foam::fluidAddedMass::solverControls() const
+{
+    // The case's own for its pressure, converged fully
+    dictionary controls;
+    const dictionary& solvers = mesh_.solutionDict().subDict("solvers");
+    for (const word& name : {"p_rghFinal", "p_rgh", "pFinal", "p"})
+    {
+        if (controls.empty() && solvers.found(name))
+        {
+            controls = mesh_.solverDict(name);
+        }
+    }
+    if (controls.empty())
+    {
+        controls.add("solver", "PCG");
+        controls.add("preconditioner", "DIC");
+    }
+    controls.set("tolerance", 1e-5);
+    controls.set("relTol", 0);
+    return controls;
+}
+
+
+void Foam::fluidAddedMass::setGradients
+(
+    const label j,
+    const volScalarField& rho,
+    volScalarField& p
+) const
+{
+    // dp/dn = -rho (a . n) on the bodies' faces, n out of the fluid
+    forAll(bodyIDs_, bi)
+    {
+        const spatialVector& Jb = J_[bi][j];
+
+        for (const label patchi : patches_[bi])
+        {
+            if (constraint(patchi))
+            {
+                continue;
+            }
+            fixedGradientFvPatchScalarField& pp =
+                refCast<fixedGradientFvPatchScalarField>
+                (
+                    p.boundaryFieldRef()[patchi]
+                );
+            const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
+            const vectorField nf(mesh_.Sf().boundaryField()[patchi]
+                /mesh_.magSf().boundaryField()[patchi]);
+            const scalarField& rhob = rho.boundaryField()[patchi];
+
+            forAll(pp, facei)
+            {
+                const vector a(Jb.l() + (Jb.w() ^ Cf[facei]));
+                pp.gradient()[facei] = -rhob[facei]*(a & nf[facei]);
+            }
+        }
+    }
+}
+
+
+void Foam::fluidAddedMass::bodyForces(const volScalarField& p)
+{
+    forAll(bodyIDs_, bi)
+    {
+        fb_[bi] = Zero;
+        for (const label patchi : patches_[bi])
+        {
+            if (constraint(patchi))
+            {
+                continue;
+            }
+            const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
+            const vectorField& Sf = mesh_.Sf().boundaryField()[patchi];
+            const scalarField& pb = p.boundaryField()[patchi];
+            forAll(pb, facei)
+            {
+                const vector f(pb[facei]*Sf[facei]);
+                fb_[bi] += spatialVector(Cf[facei] ^ f, f);
+            }
+        }
+        reduce(fb_[bi], sumOp<spatialVector>());
+    }
+}
+
+
 void Foam::fluidAddedMass::compute
 (
     const RBD::rigidBodyModel& model,
@@ -185,23 +271,7 @@ void Foam::fluidAddedMass::compute
         fvc::interpolate(1/rho)
     );
 
-    // The solver: the case's own for its pressure, converged fully
-    dictionary solverControls;
-    const dictionary& solvers = mesh_.solutionDict().subDict("solvers");
-    for (const word& name : {"p_rghFinal", "p_rgh", "pFinal", "p"})
-    {
-        if (solverControls.empty() && solvers.found(name))
-        {
-            solverControls = mesh_.solverDict(name);
-        }
-    }
-    if (solverControls.empty())
-    {
-        solverControls.add("solver", "PCG");
-        solverControls.add("preconditioner", "DIC");
-    }
-    solverControls.set("tolerance", 1e-5);
-    solverControls.set("relTol", 0);
+    const dictionary controls(solverControls());
 
     const wordList types(patchTypes());
 
@@ -223,34 +293,7 @@ void Foam::fluidAddedMass::compute
         }
         volScalarField& p = p_[j];
 
-        // dp/dn = -rho (a . n) on the bodies' faces, n out of the fluid
-        forAll(bodyIDs_, bi)
-        {
-            const spatialVector& Jb = J_[bi][j];
-
-            for (const label patchi : patches_[bi])
-            {
-                if (constraint(patchi))
-                {
-                    continue;
-                }
-                fixedGradientFvPatchScalarField& pp =
-                    refCast<fixedGradientFvPatchScalarField>
-                    (
-                        p.boundaryFieldRef()[patchi]
-                    );
-                const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
-                const vectorField nf(mesh_.Sf().boundaryField()[patchi]
-                    /mesh_.magSf().boundaryField()[patchi]);
-                const scalarField& rhob = rho.boundaryField()[patchi];
-
-                forAll(pp, facei)
-                {
-                    const vector a(Jb.l() + (Jb.w() ^ Cf[facei]));
-                    pp.gradient()[facei] = -rhob[facei]*(a & nf[facei]);
-                }
-            }
-        }
+        setGradients(j, rho, p);
 
         fvScalarMatrix pEqn(fvm::laplacian(rAf, p));
         pEqn.setReference
@@ -258,30 +301,11 @@ void Foam::fluidAddedMass::compute
             Pstream::master() && mesh_.nCells() ? 0 : -1,
             0
         );
-        pEqn.solve(solverControls);
+        pEqn.solve(controls);
 
         // The pressure's force and moment (about the origin) on each
         // body, and its joint forces Q_i: A_ij = -Q_i
-        forAll(bodyIDs_, bi)
-        {
-            fb_[bi] = Zero;
-            for (const label patchi : patches_[bi])
-            {
-                if (constraint(patchi))
-                {
-                    continue;
-                }
-                const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
-                const vectorField& Sf = mesh_.Sf().boundaryField()[patchi];
-                const scalarField& pb = p.boundaryField()[patchi];
-                forAll(pb, facei)
-                {
-                    const vector f(pb[facei]*Sf[facei]);
-                    fb_[bi] += spatialVector(Cf[facei] ^ f, f);
-                }
-            }
-            reduce(fb_[bi], sumOp<spatialVector>());
-        }
+        bodyForces(p);
 
         for (label i = 0; i < nDoF; ++i)
         {

@@ -32,6 +32,7 @@ License
 #include "volFields.H"
 #include "unitConversion.H"
 #include "OStringStream.H"
+#include "pimpleControl.H"
 
 namespace Foam
 {
@@ -48,11 +49,92 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::rigidBodyMeshMotion::readBodyMeshes()
+Foam::rigidBodyMeshMotion::bodyMesh Foam::rigidBodyMeshMotion::readBodyMesh
+(
+    const entry& e,
+    const RBD::rigidBodyModelWorkspace& ws00
+)
 {
     const polyBoundaryMesh& pbm = mesh().boundaryMesh();
-    const dictionary& bodiesDict = coeffDict().subDict("bodies");
+    const RBD::rigidBodyModel& model = driver_.model();
+    const dictionary& bd = e.dict();
 
+    bodyMesh b;
+    b.name = e.keyword();
+    b.bodyID = model.bodyID(b.name);
+    b.patches = bd.get<wordRes>("patches");
+
+    if (b.patches.empty())
+    {
+        FatalIOErrorInFunction(bd)
+            << "Body " << b.name << ": entry patches is empty" << nl
+            << "Patches of the mesh: " << pbm.names() << nl
+            << exit(FatalIOError);
+    }
+
+    for (const wordRe& p : b.patches)
+    {
+        const labelHashSet ids(pbm.patchSet(wordRes(1, p), false));
+        if (ids.empty())
+        {
+            FatalIOErrorInFunction(bd)
+                << "Body " << b.name << ": patches entry " << p
+                << " matches no patch of the mesh" << nl
+                << "Patches of the mesh: " << pbm.names() << nl
+                << exit(FatalIOError);
+        }
+        b.patchSet += ids;
+    }
+
+    b.innerDistance = RBD::readNonNegative(bd, "innerDistance");
+    b.outerDistance = RBD::readPositive(bd, "outerDistance");
+
+    if (b.innerDistance >= b.outerDistance)
+    {
+        FatalIOErrorInFunction(bd)
+            << "Body " << b.name << ": innerDistance " << b.innerDistance
+            << " must be less than outerDistance " << b.outerDistance
+            << nl << exit(FatalIOError);
+    }
+
+    // The further band of the translation along one direction
+    b.translationDirection = Zero;
+    b.translationOuterDistance = 0;
+    const bool hasDirection = bd.found("translationDirection");
+    const bool hasDistance = bd.found("translationOuterDistance");
+    if (hasDirection != hasDistance)
+    {
+        FatalIOErrorInFunction(bd)
+            << "Body " << b.name << ": translationDirection and"
+            << " translationOuterDistance go together: give both or"
+            << " neither" << nl << exit(FatalIOError);
+    }
+    if (hasDistance)
+    {
+        b.translationDirection = RBD::readAxis(bd, "translationDirection");
+        b.translationOuterDistance =
+            RBD::readPositive(bd, "translationOuterDistance");
+
+        if (b.translationOuterDistance <= b.outerDistance)
+        {
+            FatalIOErrorInFunction(bd)
+                << "Body " << b.name << ": translationOuterDistance "
+                << b.translationOuterDistance << " must be more than"
+                << " outerDistance " << b.outerDistance << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    b.X00 = model.X0(b.bodyID, ws00);
+    b.X = driver_.motion().X0(b.bodyID);
+
+    return b;
+}
+
+
+void Foam::rigidBodyMeshMotion::readBodyMeshes()
+{
+    const dictionary& bodiesDict = coeffDict().subDict("bodies");
     const RBD::rigidBodyModel& model = driver_.model();
 
     // Body transforms of the dictionary's initial state, which points0
@@ -62,86 +144,12 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
     model.kinematics(state00, ws00);
 
     DynamicList<bodyMesh> bodies;
-
     for (const entry& e : bodiesDict)
     {
-        if (!e.isDict() || !e.dict().found("patches"))
+        if (e.isDict() && e.dict().found("patches"))
         {
-            continue;
+            bodies.append(readBodyMesh(e, ws00));
         }
-
-        const dictionary& bd = e.dict();
-
-        bodyMesh b;
-        b.name = e.keyword();
-        b.bodyID = model.bodyID(b.name);
-        b.patches = bd.get<wordRes>("patches");
-
-        if (b.patches.empty())
-        {
-            FatalIOErrorInFunction(bd)
-                << "Body " << b.name << ": entry patches is empty" << nl
-                << "Patches of the mesh: " << pbm.names() << nl
-                << exit(FatalIOError);
-        }
-
-        for (const wordRe& p : b.patches)
-        {
-            const labelHashSet ids(pbm.patchSet(wordRes(1, p), false));
-            if (ids.empty())
-            {
-                FatalIOErrorInFunction(bd)
-                    << "Body " << b.name << ": patches entry " << p
-                    << " matches no patch of the mesh" << nl
-                    << "Patches of the mesh: " << pbm.names() << nl
-                    << exit(FatalIOError);
-            }
-            b.patchSet += ids;
-        }
-
-        b.innerDistance = RBD::readNonNegative(bd, "innerDistance");
-        b.outerDistance = RBD::readPositive(bd, "outerDistance");
-
-        if (b.innerDistance >= b.outerDistance)
-        {
-            FatalIOErrorInFunction(bd)
-                << "Body " << b.name << ": innerDistance " << b.innerDistance
-                << " must be less than outerDistance " << b.outerDistance
-                << nl << exit(FatalIOError);
-        }
-
-        // The further band of the translation along one direction
-        b.translationDirection = Zero;
-        b.translationOuterDistance = 0;
-        const bool hasDirection = bd.found("translationDirection");
-        const bool hasDistance = bd.found("translationOuterDistance");
-        if (hasDirection != hasDistance)
-        {
-            FatalIOErrorInFunction(bd)
-                << "Body " << b.name << ": translationDirection and"
-                << " translationOuterDistance go together: give both or"
-                << " neither" << nl << exit(FatalIOError);
-        }
-        if (hasDistance)
-        {
-            b.translationDirection = RBD::readAxis(bd, "translationDirection");
-            b.translationOuterDistance =
-                RBD::readPositive(bd, "translationOuterDistance");
-
-            if (b.translationOuterDistance <= b.outerDistance)
-            {
-                FatalIOErrorInFunction(bd)
-                    << "Body " << b.name << ": translationOuterDistance "
-                    << b.translationOuterDistance << " must be more than"
-                    << " outerDistance " << b.outerDistance << nl
-                    << exit(FatalIOError);
-            }
-        }
-
-        b.X00 = model.X0(b.bodyID, ws00);
-        b.X = driver_.motion().X0(b.bodyID);
-
-        bodies.append(b);
     }
 
     if (bodies.empty())
@@ -155,6 +163,13 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 
     bodyMeshes_.transfer(bodies);
 
+    computeWeights();
+    findBandCells();
+}
+
+
+void Foam::rigidBodyMeshMotion::computeWeights()
+{
     // Weights from the distance of the initial points to each body's
     // patches: 1 within innerDistance, 0 beyond outerDistance, a smooth
     // step between; the translation's further band the same step out to
@@ -246,7 +261,11 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
         }
         Info<< ")" << endl;
     }
+}
 
+
+void Foam::rigidBodyMeshMotion::findBandCells()
+{
     // The cells that use a moved point, and their volumes now
     boolList inBand(mesh().nCells(), false);
     forAll(bodyMeshes_, bi)
@@ -309,6 +328,59 @@ Foam::scalar Foam::rigidBodyMeshMotion::displacedVolume
 }
 
 
+Foam::string Foam::rigidBodyMeshMotion::crushedCell
+(
+    const label i,
+    const scalar ratio
+) const
+{
+    OStringStream what;
+    const point c(mesh().cellCentres()[bandCells_[i]]);
+    label bi = 0;
+    scalar nearest = GREAT;
+    forAll(bodyMeshes_, b)
+    {
+        const scalar dist = mag(c - bodyMeshes_[b].X.r());
+        if (dist < nearest)
+        {
+            nearest = dist;
+            bi = b;
+        }
+    }
+    const bodyMesh& b = bodyMeshes_[bi];
+    const scalar moved = mag(b.X.r() - b.X00.r());
+    const scalar turned =
+        radToDeg
+        (
+            acos
+            (
+                min
+                (
+                    max
+                    (
+                        0.5*(tr(b.X.E().T() & b.X00.E()) - 1),
+                        scalar(-1)
+                    ),
+                    scalar(1)
+                )
+            )
+        );
+    what<< "Body " << b.name << " at t = " << mesh().time().value()
+        << " s has moved " << moved << " m and turned " << turned
+        << " degrees from where the mesh was made; a cell at " << c
+        << " in its band (innerDistance " << b.innerDistance
+        << ", outerDistance " << b.outerDistance;
+    if (b.translationOuterDistance > 0)
+    {
+        what<< ", translationOuterDistance "
+            << b.translationOuterDistance;
+    }
+    what<< ") would be"
+        << " crushed to " << ratio << " of its volume.";
+    return what.str();
+}
+
+
 void Foam::rigidBodyMeshMotion::checkCells() const
 {
     label worst = -1;
@@ -332,56 +404,15 @@ void Foam::rigidBodyMeshMotion::checkCells() const
 
     // The body whose band holds the crushed cell (on the processor that
     // has it), and how far it has moved from where points0 put it
-    OStringStream what;
+    string what;
     if (worst >= 0 && worstRatio < 0.01)
     {
-        const point c(mesh().cellCentres()[bandCells_[worst]]);
-        label bi = 0;
-        scalar nearest = GREAT;
-        forAll(bodyMeshes_, b)
-        {
-            const scalar dist = mag(c - bodyMeshes_[b].X.r());
-            if (dist < nearest)
-            {
-                nearest = dist;
-                bi = b;
-            }
-        }
-        const bodyMesh& b = bodyMeshes_[bi];
-        const scalar moved = mag(b.X.r() - b.X00.r());
-        const scalar turned =
-            radToDeg
-            (
-                acos
-                (
-                    min
-                    (
-                        max
-                        (
-                            0.5*(tr(b.X.E().T() & b.X00.E()) - 1),
-                            scalar(-1)
-                        ),
-                        scalar(1)
-                    )
-                )
-            );
-        what<< "Body " << b.name << " at t = " << mesh().time().value()
-            << " s has moved " << moved << " m and turned " << turned
-            << " degrees from where the mesh was made; a cell at " << c
-            << " in its band (innerDistance " << b.innerDistance
-            << ", outerDistance " << b.outerDistance;
-        if (b.translationOuterDistance > 0)
-        {
-            what<< ", translationOuterDistance "
-                << b.translationOuterDistance;
-        }
-        what<< ") would be"
-            << " crushed to " << worstRatio << " of its volume.";
+        what = crushedCell(worst, worstRatio);
     }
 
     // The processor that has the cell says it
     List<string> messages(Pstream::nProcs());
-    messages[Pstream::myProcNo()] = what.str();
+    messages[Pstream::myProcNo()] = what;
     Pstream::gatherList(messages);
 
     if (Pstream::master())
@@ -432,7 +463,6 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
     test_(coeffDict().getOrDefault<Switch>("test", false)),
     rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
-    addedMassTimeIndex_(-1),
     addedMassRamp_(-1),
     fx_(driver_.model().nBodies(), Zero)
 {
@@ -528,18 +558,19 @@ void Foam::rigidBodyMeshMotion::fluidForces()
 
 void Foam::rigidBodyMeshMotion::giveAddedMass()
 {
-    const label timeIndex = mesh().time().timeIndex();
-
+    // At the first solve of a step (and at the first after read())
     if
     (
         test_
      || !driver_.motion().coupling().usesFluidAddedMass()
-     || timeIndex == addedMassTimeIndex_
+     || (
+            addedMass_.valid()
+         && !driver_.step().isNew(mesh().time().timeIndex())
+        )
     )
     {
         return;
     }
-    addedMassTimeIndex_ = timeIndex;
 
     if (!addedMass_.valid())
     {
@@ -589,6 +620,71 @@ void Foam::rigidBodyMeshMotion::giveAddedMass()
     }
 
     driver_.motion().setFluidAddedMass(A);
+}
+
+
+void Foam::rigidBodyMeshMotion::useResidualControl
+(
+    const entry& e,
+    const dictionary& controls,
+    const dictionary& pimpleDict
+)
+{
+    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+
+    if (!e.isDict())
+    {
+        FatalIOErrorInFunction(controls)
+            << "PIMPLE residualControl entry " << e.keyword()
+            << " must be a dictionary: " << e.keyword()
+            << " { tolerance 0.1; relTol 0; }" << nl
+            << exit(FatalIOError);
+    }
+    const dictionary& d = e.dict();
+    const scalar tol = RBD::readPositive(d, "tolerance");
+    const scalar relTol = d.getOrDefault<scalar>("relTol", 0);
+    if (relTol != 0)
+    {
+        FatalIOErrorInFunction(d)
+            << "PIMPLE residualControl entry " << e.keyword()
+            << ": relTol " << relTol << " must be 0. The coupling's"
+            << " residual is already relative (to the motion's"
+            << " amplitude), and the first corrector of a step has none"
+            << " of its own, so a relative drop means nothing." << nl
+            << exit(FatalIOError);
+    }
+
+    if
+    (
+        coeffDict().found("couplingTolerance")
+     && coeffDict().get<scalar>("couplingTolerance") != tol
+    )
+    {
+        FatalIOErrorInFunction(coeffDict())
+            << "couplingTolerance "
+            << coeffDict().get<scalar>("couplingTolerance")
+            << " differs from the tolerance " << tol << " of PIMPLE"
+            << " residualControl entry " << e.keyword() << " in "
+            << fvm.solutionDict().name() << ": they are one tolerance."
+            << " Give it once (residualControl's sets both)." << nl
+            << exit(FatalIOError);
+    }
+
+    if (!pimpleDict.getOrDefault<bool>("moveMeshOuterCorrectors", false))
+    {
+        WarningInFunction
+            << "PIMPLE residualControl entry " << e.keyword()
+            << ": the mesh moves only in the first outer corrector"
+            << " (moveMeshOuterCorrectors no), so the bodies are solved"
+            << " once a step and the correctors cannot converge their"
+            << " coupling; the loop will run all nOuterCorrectors."
+            << endl;
+    }
+
+    driver_.setCouplingTolerance(tol);
+    Info<< "rigidBodyMotion: outer correctors on demand: PIMPLE ends"
+        << " them once the coupling's residual is below " << tol
+        << " (residualControl " << e.keyword() << ")" << endl;
 }
 
 
@@ -643,74 +739,44 @@ void Foam::rigidBodyMeshMotion::readResidualControl()
             continue;
         }
 
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(controls)
-                << "PIMPLE residualControl entry " << e.keyword()
-                << " must be a dictionary: " << e.keyword()
-                << " { tolerance 0.1; relTol 0; }" << nl
-                << exit(FatalIOError);
-        }
-        const dictionary& d = e.dict();
-        const scalar tol = RBD::readPositive(d, "tolerance");
-        const scalar relTol = d.getOrDefault<scalar>("relTol", 0);
-        if (relTol != 0)
-        {
-            FatalIOErrorInFunction(d)
-                << "PIMPLE residualControl entry " << e.keyword()
-                << ": relTol " << relTol << " must be 0. The coupling's"
-                << " residual is already relative (to the motion's"
-                << " amplitude), and the first corrector of a step has none"
-                << " of its own, so a relative drop means nothing." << nl
-                << exit(FatalIOError);
-        }
-
-        if
-        (
-            coeffDict().found("couplingTolerance")
-         && coeffDict().get<scalar>("couplingTolerance") != tol
-        )
-        {
-            FatalIOErrorInFunction(coeffDict())
-                << "couplingTolerance "
-                << coeffDict().get<scalar>("couplingTolerance")
-                << " differs from the tolerance " << tol << " of PIMPLE"
-                << " residualControl entry " << e.keyword() << " in "
-                << fvm.solutionDict().name() << ": they are one tolerance."
-                << " Give it once (residualControl's sets both)." << nl
-                << exit(FatalIOError);
-        }
-
-        if (!pimpleDict.getOrDefault<bool>("moveMeshOuterCorrectors", false))
-        {
-            WarningInFunction
-                << "PIMPLE residualControl entry " << e.keyword()
-                << ": the mesh moves only in the first outer corrector"
-                << " (moveMeshOuterCorrectors no), so the bodies are solved"
-                << " once a step and the correctors cannot converge their"
-                << " coupling; the loop will run all nOuterCorrectors."
-                << endl;
-        }
-
-        driver_.setCouplingTolerance(tol);
-        Info<< "rigidBodyMotion: outer correctors on demand: PIMPLE ends"
-            << " them once the coupling's residual is below " << tol
-            << " (residualControl " << e.keyword() << ")" << endl;
+        useResidualControl(e, controls, pimpleDict);
     }
+}
+
+
+bool Foam::rigidBodyMeshMotion::lastSolve() const
+{
+    const Time& runTime = mesh().time();
+    if
+    (
+        runTime.value()
+      < runTime.endTime().value() - 0.5*runTime.deltaTValue()
+    )
+    {
+        return false;
+    }
+
+    // Its last solve
+    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+    const HashTable<const pimpleControl*> pimples
+    (
+        fvm.lookupClass<pimpleControl>()
+    );
+    if (pimples.empty())
+    {
+        return true;
+    }
+    const bool moveMeshOuterCorrectors =
+        fvm.solutionDict().subOrEmptyDict("PIMPLE")
+       .getOrDefault<bool>("moveMeshOuterCorrectors", false);
+
+    return !moveMeshOuterCorrectors || (*pimples.cbegin())->finalIter();
 }
 
 
 void Foam::rigidBodyMeshMotion::setSolverPerformance()
 {
-    // The step's 1st solve has the previous step's forces: never converged.
-    // Its 2nd has those of the fluid's 1st corrector, whose own fields have
-    // not converged, so the next corrector can still move the forces by
-    // more than the residual says: its residual counts twice, a margin
-    // that keeps PIMPLE from stopping on a residual that only looks small
-    const scalar r =
-        driver_.nCalls() == 1 ? GREAT
-      : driver_.nCalls() == 2 ? 2*driver_.residual().maxResidual()
-      : driver_.residual().maxResidual();
+    const scalar r = driver_.step().pimpleResidual();
 
     refCast<const fvMesh>(mesh()).setSolverPerformance
     (
@@ -832,6 +898,13 @@ void Foam::rigidBodyMeshMotion::solve()
             driver_.status(bodyMeshes_[bi].bodyID);
         }
     }
+
+    // The run's end: its last step committed (not in a destructor, where a
+    // FatalError would end in std::terminate)
+    if (lastSolve())
+    {
+        driver_.end();
+    }
 }
 
 
@@ -853,7 +926,6 @@ bool Foam::rigidBodyMeshMotion::read()
     {
         // A new coupling scheme: give it the added mass at the next step
         addedMass_.clear();
-        addedMassTimeIndex_ = -1;
         addedMassRamp_ = -1;
         residualField_.clear();
         return driver_.read(coeffDict());

@@ -93,14 +93,12 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     couplingScheme(dict, model),
     A_(model.nDoF(), Zero),
     K_(model.nDoF(), Zero),
-    hasK_(false),
-    newK_(false),
+    kState_(jacobian::none),
     P_(model.nDoF(), Zero),
     Q_(model.nDoF(), Zero),
     forgetting_(0.9),
-    learnt_(false),
+    aSource_(source::none),
     useFluid_(readAddedMassSource(dict)),
-    fromFluid_(false),
     nSolves_(0),
     aGivenPrev_(model.nDoF(), Zero),
     aNewPrev_(model.nDoF(), Zero),
@@ -267,9 +265,9 @@ void Foam::RBD::couplingSchemes::addedMass::update()
     // Refused unless A > -H/10: added mass is not negative, and a fit
     // spoilt by noise must not leave H + A near losing definiteness
     const bool accepted = choleskyDecompose(M_, L_);
-    if (accepted)
+    if (accepted && aSource_ == source::none)
     {
-        learnt_ = true;
+        aSource_ = source::learnt;
     }
     else
     {
@@ -328,6 +326,77 @@ void Foam::RBD::couplingSchemes::addedMass::learn
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
+void Foam::RBD::couplingSchemes::addedMass::judgeJacobian()
+{
+    if (kState_ != jacobian::pending)
+    {
+        return;
+    }
+
+    // K counts where it is more than the round-off of its finite
+    // differences against the mass matrix: an entry against the entries
+    // of its row and column's diagonal, of the same units at any scale
+    kState_ = jacobian::none;
+    for (label i = 0; i < K_.m(); ++i)
+    {
+        for (label j = 0; j < K_.m(); ++j)
+        {
+            if (mag(K_(i, j)) > 1e-6*Foam::sqrt(mag(H_(i, i)*H_(j, j))))
+            {
+                kState_ = jacobian::significant;
+                return;
+            }
+        }
+    }
+}
+
+
+void Foam::RBD::couplingSchemes::addedMass::correctWithFluid
+(
+    const scalarField& aGiven,
+    scalarField& a
+)
+{
+    const bool hasK = kState_ == jacobian::significant;
+
+    // Newton's step with the fluid's added mass (if a mesh motion gave
+    // it) and the solve's Jacobian: the distance of aGiven from the
+    // coupled answer, and the whole step; with addedMassRelaxation
+    // below 1, A/omega on the left, a damped step
+    aTrial_ = a;
+    if
+    (
+        (aSource_ == source::fluid || hasK)
+     && (
+            newtonStep(aGiven, aTrial_, hasK, 1)
+         || newtonStep(aGiven, aTrial_, false, 1)
+        )
+    )
+    {
+        distance_ = x_;
+        if (omega_ == 1)
+        {
+            a = aTrial_;
+        }
+        else if
+        (
+            !newtonStep(aGiven, a, hasK, 1/omega_)
+         && !newtonStep(aGiven, a, false, 1/omega_)
+        )
+        {
+            a = aTrial_;
+        }
+        return;
+    }
+
+    // Nothing known: the stock scheme at addedMassRelaxation
+    forAll(a, i)
+    {
+        a[i] = aGiven[i] + omega_*(a[i] - aGiven[i]);
+    }
+}
+
+
 void Foam::RBD::couplingSchemes::addedMass::correct
 (
     const rigidBodyModelState& state,
@@ -337,66 +406,18 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 )
 {
     massMatrix(state);
-
-    // K counts where it is more than the round-off of its finite
-    // differences against the mass matrix: an entry against the entries
-    // of its row and column's diagonal, of the same units at any scale
-    if (newK_)
-    {
-        hasK_ = false;
-        for (label i = 0; i < K_.m(); ++i)
-        {
-            for (label j = 0; j < K_.m(); ++j)
-            {
-                hasK_ = hasK_
-                 || mag(K_(i, j)) > 1e-6*Foam::sqrt(mag(H_(i, i)*H_(j, j)));
-            }
-        }
-        newK_ = false;
-    }
+    judgeJacobian();
 
     if (useFluid_)
     {
-        // Newton's step with the fluid's added mass (if a mesh motion gave
-        // it) and the solve's Jacobian: the distance of aGiven from the
-        // coupled answer, and the whole step; with addedMassRelaxation
-        // below 1, A/omega on the left, a damped step
-        aTrial_ = a;
-        if
-        (
-            (fromFluid_ || hasK_)
-         && (
-                newtonStep(aGiven, aTrial_, hasK_, 1)
-             || newtonStep(aGiven, aTrial_, false, 1)
-            )
-        )
-        {
-            distance_ = x_;
-            if (omega_ == 1)
-            {
-                a = aTrial_;
-            }
-            else if
-            (
-                !newtonStep(aGiven, a, hasK_, 1/omega_)
-             && !newtonStep(aGiven, a, false, 1/omega_)
-            )
-            {
-                a = aTrial_;
-            }
-        }
-        else
-        {
-            // Nothing known: the stock scheme at addedMassRelaxation
-            forAll(a, i)
-            {
-                a[i] = aGiven[i] + omega_*(a[i] - aGiven[i]);
-            }
-        }
+        correctWithFluid(aGiven, a);
         return;
     }
 
     learn(aGiven, a, firstSolve);
+
+    const bool hasK = kState_ == jacobian::significant;
+    const bool learnt = aSource_ != source::none;
 
     // The fraction addedMassRelaxation of Newton's step with the learnt
     // added mass (noisy, which the whole step would follow): the stock
@@ -404,10 +425,10 @@ void Foam::RBD::couplingSchemes::addedMass::correct
     // that shrinks by (1 - omega) per solve whatever the density
     if
     (
-        (learnt_ || hasK_)
+        (learnt || hasK)
      && (
-            newtonStep(aGiven, a, hasK_, 1)
-         || (learnt_ && newtonStep(aGiven, a, false, 1))
+            newtonStep(aGiven, a, hasK, 1)
+         || (learnt && newtonStep(aGiven, a, false, 1))
         )
     )
     {
@@ -447,8 +468,7 @@ void Foam::RBD::couplingSchemes::addedMass::setFluidAddedMass
 )
 {
     A_ = A;
-    learnt_ = true;
-    fromFluid_ = true;
+    aSource_ = source::fluid;
 
     if (debug)
     {
@@ -471,7 +491,7 @@ void Foam::RBD::couplingSchemes::addedMass::setSolveJacobian
             K_(i, j) = 0.5*(K(i, j) + K(j, i));
         }
     }
-    newK_ = true;
+    kState_ = jacobian::pending;
 }
 
 
@@ -487,7 +507,7 @@ void Foam::RBD::couplingSchemes::addedMass::relaxStart
 
     // The fluid at rest has answered no acceleration yet: with its added
     // mass on both sides, (H + A) a = H a
-    if (fromFluid_)
+    if (aSource_ == source::fluid)
     {
         s_ = Zero;
         if (newtonStep(s_, a, false, 1))

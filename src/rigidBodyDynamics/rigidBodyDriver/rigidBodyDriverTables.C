@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+    Rigid-body dynamics for OpenFOAM v1912
+    Copyright (C) the authors of this project (its git history names them)
+-------------------------------------------------------------------------------
+License
+    This file is part of the rigid-body dynamics for OpenFOAM v1912.
+
+    It is free software: you can redistribute it and/or modify it under the
+    terms of the GNU General Public License as published by the Free
+    Software Foundation, either version 3 of the License, or (at your
+    option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT ANY
+    WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with it (the file LICENSE at the top of the project).  If not, see
+    <https://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
+#include "rigidBodyDriver.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
+{
+    const rigidBodyModel& model = motion_.model();
+    const rigidBodyModelWorkspace& ws = motion_.workspace();
+    const rigidBodyModelState& state = motion_.state();
+
+    const label id = bodyIDs_[bi];
+    const label master = model.masterID(id);
+    const rigidBody& body = model.bodies()[master];
+    const spatialTransform X(model.X0(id, ws));
+    const spatialVector v(model.v(id, Zero, ws));
+
+    row.start();
+    row.add("t", state.t());
+    row.add("CofR", X.r());
+    row.add("Orientation", X.E());
+    row.add("v", v.l());
+    row.add("omega", v.w());
+    for (const label i : dofs_[bi])
+    {
+        row.add("q" + Foam::name(i), state.q()[i]);
+    }
+    for (const label i : dofs_[bi])
+    {
+        row.add("qDot" + Foam::name(i), state.qDot()[i]);
+    }
+    if (externalForces_)
+    {
+        row.add("fluidForce", fx_[master].l());
+        row.add("fluidMoment", fx_[master].w());
+    }
+    row.add("restraintForce", fxR_[master].l());
+    row.add("restraintMoment", fxR_[master].w());
+    row.add("kineticEnergy", body.kineticEnergy(ws.v[master]));
+    row.add
+    (
+        "potentialEnergy",
+        -body.m()*(model.g() & model.globalPoint(master, body.c(), ws))
+    );
+    if (externalForces_)
+    {
+        label dof = -1;
+        row.add("couplingResidual", bodyResidual(bi, dof));
+    }
+    for (const restraint& r : motion_.restraints())
+    {
+        if (r.bodyID() == id)
+        {
+            r.addColumns(row);
+        }
+    }
+
+    // A prescribed joint's driving force: in a forced oscillation, what the
+    // fluid and the body's own inertia take
+    const labelList& prescribing = motion_.prescribing();
+    forAll(prescribing, s)
+    {
+        const restraint& r = motion_.restraints()[prescribing[s]];
+        const rateConstraint& c = motion_.prescriptions()[s];
+        if (c.dof >= 0 && r.bodyID() == id)
+        {
+            row.add(r.name() + ".force", c.moment);
+        }
+    }
+    row.end();
+}
+
+
+void Foam::RBD::rigidBodyDriver::writeRows(const bool flush)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    floatingPointTraps traps;
+
+    // The restraints' forces at the state now, the step's end; then their
+    // own states committed there, which the rows show (the coupling's
+    // trial evaluations never reach the table)
+    tauR_ = Zero;
+    fxR_ = Zero;
+    motion_.restraintForces(tauR_, fxR_);
+    motion_.commitRestraints();
+
+    forAll(rows_, bi)
+    {
+        fillRow(bi, rows_[bi]);
+    }
+    checkRows();
+
+    if (tables_.empty())
+    {
+        const fileName dir
+        (
+            time_.globalPath()/"postProcessing"/name_/startTimeName_
+        );
+        mkDir(dir);
+
+        tables_.setSize(names_.size());
+        forAll(names_, bi)
+        {
+            tables_.set(bi, new OFstream(dir/names_[bi] + ".dat"));
+            OFstream& os = tables_[bi];
+            os.precision(IOstream::defaultPrecision());
+            os  << "# Motion of body " << names_[bi] << ": SI units; forces"
+                << " in global axes, moments about the global origin" << nl;
+            rows_[bi].writeHeader(os);
+        }
+    }
+
+    forAll(rows_, bi)
+    {
+        OFstream& os = tables_[bi];
+        rows_[bi].write(os);
+        if (flush)
+        {
+            os.flush();
+        }
+    }
+}
