@@ -31,7 +31,8 @@ License
 addRigidBodyCommonKeywords
 (
     coefficients, Residual, "couplingTolerance", "couplingFloorFraction",
-    "couplingFloorAcceleration", "couplingFloor", "couplingFloorRotation"
+    "couplingFloorFractionRotation", "couplingFloorAcceleration",
+    "couplingFloor", "couplingFloorRotation"
 );
 
 
@@ -47,6 +48,7 @@ Foam::RBD::couplingResidual::couplingResidual
     tolerance_(0.1),
     rotation_(rotationDoFs(model)),
     floorFraction_(0.01),
+    floorFractionRotation_(0.001),
     floorAcceleration_(0),
     gyration_(dofLengths(model)),
     floor_(model.nDoF(), Zero),
@@ -97,9 +99,15 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
     floorFraction_ = dict.found("couplingFloorFraction")
         ? readNonNegative(dict, "couplingFloorFraction")
         : 0.01;
+    floorFractionRotation_ = dict.found("couplingFloorFractionRotation")
+        ? readNonNegative(dict, "couplingFloorFractionRotation")
+        : 0.001;
 
-    // The translation floor: a fraction of g, or given if there is no g
+    // The translation floor: a fraction of g, or given if there is no g;
+    // the rotations' a fraction of g over their lengths, or without g the
+    // translation floor in the ratio of the two fractions
     scalar floor = floorFraction_*g_;
+    scalar floorRotation = floorFractionRotation_*g_;
     if (g_ < VSMALL)
     {
         if (dict.found("couplingFloorAcceleration"))
@@ -107,6 +115,10 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
             floorAcceleration_ =
                 readNonNegative(dict, "couplingFloorAcceleration");
             floor = floorAcceleration_;
+            floorRotation =
+                floorFraction_ > 0
+              ? floor*floorFractionRotation_/floorFraction_
+              : 0;
         }
         else if (coupled_)
         {
@@ -122,7 +134,7 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
 
     forAll(floor_, i)
     {
-        floor_[i] = rotation_[i] ? floor/gyration_[i] : floor;
+        floor_[i] = rotation_[i] ? floorRotation/gyration_[i] : floor;
     }
 }
 
