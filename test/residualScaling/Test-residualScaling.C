@@ -274,34 +274,29 @@ void scales
 }
 
 
-//- The full-scale spar pitching 5 degrees at 30 s, 20% off; and at rest
-void sparPitch()
+//- A rotation of amplitude alpha at the period T, 20% off the coupled
+//  answer, is measured against its motion: largest residual 0.2, and
+//  its steps flagged where the error is 10% of the amplitude; the model
+//  at rest, its accelerations noise of 1e-3 of the floors 10 times off,
+//  is not flagged
+void pitchFlagged
+(
+    const std::string& what,
+    const std::string& worstWhat,
+    const RBD::rigidBodyModel& model,
+    const label pitch,
+    const scalar alpha,
+    const scalar T
+)
 {
     const dictionary coeffs;
-    autoPtr<RBD::rigidBodyMotion> m(test::motion(spar(1)));
-    RBD::couplingResidual r(coeffs, m->model(), true);
-
-    // Pitch is about y: the degree of freedom whose residual moves
-    const scalar alpha = 5*pi/180*sqr(2*pi/30);
+    RBD::couplingResidual r(coeffs, model, true);
     scalarField amp(r.floors().size(), Zero);
-    label pitch = -1;
-    forAll(amp, i)
-    {
-        if (r.rotation(i) && pitch < 0 && i >= 3)
-        {
-            pitch = i + 1;
-        }
-    }
     amp[pitch] = alpha;
 
     DynamicList<scalar> res;
-    drive(r, 1, amp, 30, 0.2, res);
-    checkRel
-    (
-        r.worst(), 0.2, 1e-6,
-        "OC3 spar at full scale, pitching 5 degrees at 30 s (0.0038 rad/s^2)"
-        " 20% off the coupled answer: largest residual"
-    );
+    drive(r, 1, amp, T, 0.2, res);
+    checkRel(r.worst(), 0.2, 1e-6, what + worstWhat);
     // Flagged where |a| is above half its amplitude: 2/3 of the time
     check
     (
@@ -312,15 +307,42 @@ void sparPitch()
         " motion)"
     );
 
-    RBD::couplingResidual rest(coeffs, m->model(), true);
-    scalarField noise(r.floors()*1e-3);
+    RBD::couplingResidual rest(coeffs, model, true);
+    scalarField noise(rest.floors()*1e-3);
     DynamicList<scalar> resRest;
-    drive(rest, 1, noise, 0.1, 10, resRest);
+    drive(rest, 1, noise, T, 10, resRest);
     check
     (
         rest.nFlagged() == 0 && rest.worst() <= 0.011,
         "... at rest, accelerations of noise 1e-3 of the floors 10 times"
         " off: not flagged (largest residual " + say(rest.worst()) + ")"
+    );
+}
+
+
+//- The full-scale spar pitching 5 degrees at 30 s, 20% off; and at rest
+void sparPitch()
+{
+    const dictionary coeffs;
+    autoPtr<RBD::rigidBodyMotion> m(test::motion(spar(1)));
+    RBD::couplingResidual r(coeffs, m->model(), true);
+
+    // Pitch is about y: the degree of freedom whose residual moves
+    label pitch = -1;
+    for (label i = 0; i < r.floors().size(); ++i)
+    {
+        if (r.rotation(i) && pitch < 0 && i >= 3)
+        {
+            pitch = i + 1;
+        }
+    }
+
+    pitchFlagged
+    (
+        "OC3 spar at full scale, pitching 5 degrees at 30 s (0.0038 rad/s^2)"
+        " 20% off the coupled answer",
+        ": largest residual",
+        m->model(), pitch, 5*pi/180*sqr(2*pi/30), 30
     );
 }
 
@@ -351,32 +373,11 @@ void boxPitch()
 
     // 0.019 rad at the still water's 1.65 s period, or the waves' 1.2 s
     // before they have grown: 0.3 rad/s^2
-    scalarField amp(3, Zero);
-    amp[pitch] = 0.3;
-    DynamicList<scalar> res;
-    drive(r, 1, amp, 1.65, 0.2, res);
-    checkRel
+    pitchFlagged
     (
-        r.worst(), 0.2, 1e-6,
-        "box pitching at 0.3 rad/s^2, 20% off the coupled answer: largest"
-        " residual (a floor of 0.01 |g|/l gave 0.07)"
-    );
-    check
-    (
-        r.nFlagged() >= r.nSteps()/2,
-        "... and its steps are flagged where the error is 10% of the"
-        " amplitude (" + say(r.nFlagged()) + " of " + say(r.nSteps()) + ")"
-    );
-
-    RBD::couplingResidual rest(coeffs, m->model(), true);
-    scalarField noise(rest.floors()*1e-3);
-    DynamicList<scalar> resRest;
-    drive(rest, 1, noise, 1.65, 10, resRest);
-    check
-    (
-        rest.nFlagged() == 0 && rest.worst() <= 0.011,
-        "... at rest, accelerations of noise 1e-3 of the floors 10 times"
-        " off: not flagged (largest residual " + say(rest.worst()) + ")"
+        "box pitching at 0.3 rad/s^2, 20% off the coupled answer",
+        ": largest residual (a floor of 0.01 |g|/l gave 0.07)",
+        m->model(), pitch, 0.3, 1.65
     );
 
     // Given: couplingFloorFractionRotation sets the rotations' floor alone
