@@ -88,10 +88,11 @@ void Foam::RBD::couplingResidual::read(const dictionary& dict)
                 << " scale only." << nl
                 << "    The floors now come from the model:"
                 << " couplingFloorFraction |g| (translations) and"
-                << " couplingFloorFraction |g|/r (rotations, r the radius of"
-                << " gyration about the joint's axis)." << nl
+                << " couplingFloorFractionRotation |g|/r (rotations, r the"
+                << " radius of gyration about the joint's axis)." << nl
                 << "    Remove " << key << ", or give couplingFloorFraction"
-                << " (default 0.01); see docs/coupling.md" << nl
+                << " (default 0.01) or couplingFloorFractionRotation"
+                << " (default 0.001); see docs/coupling.md" << nl
                 << exit(FatalIOError);
         }
     }
