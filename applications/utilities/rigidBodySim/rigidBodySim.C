@@ -84,7 +84,11 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+namespace
+{
+
+//- The application's notes and options
+void addOptions()
 {
     argList::addNote
     (
@@ -125,22 +129,12 @@ int main(int argc, char *argv[])
         "print the status of every body and write a table row after every"
         " time step, not only at write times"
     );
+}
 
-    #include "setRootCase.H"
 
-    // No input ends in a signal: with the floating-point traps off, a
-    // number OpenFOAM's reader cannot hold (1e400) is its FatalIOError at
-    // the entry, an overflow in a check an infinity the check refuses, and
-    // a step that overflows a FatalError of the driver's checks, which
-    // name the body, the quantity and the time
-    RBD::floatingPointTraps traps;
-
-    checkRunControls(args);
-
-    #include "createTime.H"
-
-    Sout.precision(IOstream::defaultPrecision());
-
+//- A positive deltaT, and an endTime after the time the run starts from
+void checkTimes(const Time& runTime)
+{
     if (!(runTime.deltaTValue() > 0))
     {
         FatalIOErrorInFunction(runTime.controlDict())
@@ -172,14 +166,13 @@ int main(int argc, char *argv[])
         }
         FatalIOError << nl << exit(FatalIOError);
     }
+}
 
-    const bool everyStep = args.found("everyStep");
 
-    const dictionary coeffs(rigidBodySimCoeffs(runTime));
-    RBD::rigidBodyDriver driver(runTime, coeffs, "rigidBodySim", false);
-    const word startTimeName(runTime.timeName());
-    driver.tableEveryStep(everyStep);
-
+//- The model in one line: the bodies named in bodies, merged ones, the
+//  degrees of freedom and g
+void printModelSummary(const RBD::rigidBodyDriver& driver)
+{
     const RBD::rigidBodyModel& model = driver.model();
 
     // The bodies named in bodies: the tree's own (not the massless bodies
@@ -197,7 +190,43 @@ int main(int argc, char *argv[])
     }
     Info<< ", " << countOf(model.nDoF(), "degree", "degrees").c_str()
         << " of freedom, g " << model.g() << nl << endl;
+}
 
+
+//- Every body's status, after the time
+void printStatus(const Time& runTime, RBD::rigidBodyDriver& driver)
+{
+    Info<< "Time = " << runTime.timeName() << endl;
+    for (const label id : driver.bodyIDs())
+    {
+        driver.status(id);
+    }
+}
+
+
+//- Whether the time step just taken is the run's last: as Time::run()
+//  tells it, without calling run(), which would execute the function
+//  objects once more
+bool lastStep(const Time& runTime)
+{
+    return
+        !(
+            runTime.value()
+          < runTime.endTime().value() - 0.5*runTime.deltaTValue()
+        );
+}
+
+
+//- With -report, the model's report, its model printed before the first
+//  step; else none
+autoPtr<rigidBodySimReport> newModelReport
+(
+    const argList& args,
+    const Time& runTime,
+    RBD::rigidBodyDriver& driver,
+    const dictionary& coeffs
+)
+{
     autoPtr<rigidBodySimReport> modelReport;
     if (args.found("report"))
     {
@@ -208,30 +237,144 @@ int main(int argc, char *argv[])
             coeffs.subDict("solver").get<word>("type")
         );
     }
+    return modelReport;
+}
+
+
+//- The closing summary: steps, solves, wall and CPU time
+void printSummary
+(
+    const label nSteps,
+    const label nSolves,
+    const scalar wall,
+    const std::clock_t cpu0
+)
+{
+    Info<< "rigidBodySim: " << nSteps << " steps, " << nSolves << " solves, "
+        << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
+        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step, "
+        << scalar(std::clock() - cpu0)/CLOCKS_PER_SEC << " s of CPU time"
+        << nl << "End" << nl << endl;
+}
+
+
+//- The progress line: at most every 5% of the run, and at most once a
+//  second of wall time but for the last line
+class progressLine
+{
+    //- The run's start time and span [s]
+    const scalar t0_;
+    const scalar span_;
+
+    //- The fraction of the run at which the next line is due, and the wall
+    //  time of the last line [s]
+    scalar next_;
+    scalar lastWall_;
+
+public:
+
+    //- Construct for the run of runTime
+    explicit progressLine(const Time& runTime)
+    :
+        t0_(runTime.value()),
+        span_(max(runTime.endTime().value() - t0_, VSMALL)),
+        next_(0.05),
+        lastWall_(0)
+    {}
+
+    //- After a step: print the line if it is due (last: the run's last
+    //  step)
+    void step
+    (
+        const Time& runTime,
+        const label nSteps,
+        const clockTime& clock,
+        const bool last
+    )
+    {
+        const scalar done = (runTime.value() - t0_)/span_;
+        if (!(last || done >= next_ - SMALL))
+        {
+            return;
+        }
+        const scalar wall = clock.elapsedTime();
+        if (last || wall - lastWall_ >= 1)
+        {
+            lastWall_ = wall;
+            const scalar left =
+                done > 0 ? max(wall*(1 - done)/done, 0) : 0;
+            Info<< "rigidBodySim: t = " << runTime.timeName() << " s ("
+                << label(100*done + 0.5) << "%), " << nSteps
+                << " steps, " << label(wall > 0 ? nSteps/wall : 0)
+                << " steps/s";
+            if (!last && left >= 1)
+            {
+                Info<< ", about " << label(left + 0.5) << " s left";
+            }
+            else if (!last)
+            {
+                Info<< ", under a second left";
+            }
+            Info<< endl;
+        }
+        while (next_ <= done + SMALL)
+        {
+            next_ += 0.05;
+        }
+    }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    addOptions();
+
+    #include "setRootCase.H"
+
+    // No input ends in a signal: with the floating-point traps off, a
+    // number OpenFOAM's reader cannot hold (1e400) is its FatalIOError at
+    // the entry, an overflow in a check an infinity the check refuses, and
+    // a step that overflows a FatalError of the driver's checks, which
+    // name the body, the quantity and the time
+    RBD::floatingPointTraps traps;
+
+    checkRunControls(args);
+
+    #include "createTime.H"
+
+    Sout.precision(IOstream::defaultPrecision());
+
+    checkTimes(runTime);
+
+    const bool everyStep = args.found("everyStep");
+
+    const dictionary coeffs(rigidBodySimCoeffs(runTime));
+    RBD::rigidBodyDriver driver(runTime, coeffs, "rigidBodySim", false);
+    const word startTimeName(runTime.timeName());
+    driver.tableEveryStep(everyStep);
+
+    const RBD::rigidBodyModel& model = driver.model();
+
+    printModelSummary(driver);
+
+    autoPtr<rigidBodySimReport> modelReport
+    (
+        newModelReport(args, runTime, driver, coeffs)
+    );
 
     // No fluid: the restraints are the only forces besides gravity
     const Field<spatialVector> noExternalForces(model.nBodies(), Zero);
 
-    auto report = [&]()
-    {
-        Info<< "Time = " << runTime.timeName() << endl;
-        for (const label id : driver.bodyIDs())
-        {
-            driver.status(id);
-        }
-    };
-
     if (everyStep || driver.report())
     {
-        report();
+        printStatus(runTime, driver);
     }
 
-    // Progress at most every 5% of the run, and at most once a second of
-    // wall time but for the last line
-    const scalar t0 = runTime.value();
-    const scalar span = max(runTime.endTime().value() - t0, VSMALL);
-    scalar nextProgress = 0.05;
-    scalar lastProgress = 0;
+    progressLine progress(runTime);
     label nSteps = 0;
     label nSolves = 0;
     clockTime clock;
@@ -251,7 +394,7 @@ int main(int argc, char *argv[])
 
         if (everyStep || (driver.report() && runTime.writeTime()))
         {
-            report();
+            printStatus(runTime, driver);
         }
 
         if (runTime.writeTime())
@@ -262,40 +405,9 @@ int main(int argc, char *argv[])
             driver.writeState();
         }
 
-        // The last step: as Time::run() tells it, without calling run(),
-        // which would execute the function objects once more
-        const bool last =
-            !(
-                runTime.value()
-              < runTime.endTime().value() - 0.5*runTime.deltaTValue()
-            );
-        const scalar done = (runTime.value() - t0)/span;
-        if (!everyStep && (last || done >= nextProgress - SMALL))
+        if (!everyStep)
         {
-            const scalar wall = clock.elapsedTime();
-            if (last || wall - lastProgress >= 1)
-            {
-                lastProgress = wall;
-                const scalar left =
-                    done > 0 ? max(wall*(1 - done)/done, 0) : 0;
-                Info<< "rigidBodySim: t = " << runTime.timeName() << " s ("
-                    << label(100*done + 0.5) << "%), " << nSteps
-                    << " steps, " << label(wall > 0 ? nSteps/wall : 0)
-                    << " steps/s";
-                if (!last && left >= 1)
-                {
-                    Info<< ", about " << label(left + 0.5) << " s left";
-                }
-                else if (!last)
-                {
-                    Info<< ", under a second left";
-                }
-                Info<< endl;
-            }
-            while (nextProgress <= done + SMALL)
-            {
-                nextProgress += 0.05;
-            }
+            progress.step(runTime, nSteps, clock, lastStep(runTime));
         }
     }
 
@@ -313,11 +425,7 @@ int main(int argc, char *argv[])
         );
     }
 
-    Info<< "rigidBodySim: " << nSteps << " steps, " << nSolves << " solves, "
-        << 1e-3*label(1e3*wall + 0.5) << " s of wall time, "
-        << 1e-3*label(1e9*wall/max(nSteps, 1) + 0.5) << " us per step, "
-        << scalar(std::clock() - cpu0)/CLOCKS_PER_SEC << " s of CPU time"
-        << nl << "End" << nl << endl;
+    printSummary(nSteps, nSolves, wall, cpu0);
 
     return 0;
 }
