@@ -204,19 +204,6 @@ void printStatus(const Time& runTime, RBD::rigidBodyDriver& driver)
 }
 
 
-//- Whether the time step just taken is the run's last: as Time::run()
-//  tells it, without calling run(), which would execute the function
-//  objects once more
-bool lastStep(const Time& runTime)
-{
-    return
-        !(
-            runTime.value()
-          < runTime.endTime().value() - 0.5*runTime.deltaTValue()
-        );
-}
-
-
 //- With -report, the model's report, its model printed before the first
 //  step; else none
 autoPtr<rigidBodySimReport> newModelReport
@@ -282,8 +269,8 @@ public:
         lastWall_(0)
     {}
 
-    //- After a step: print the line if it is due (last: the run's last
-    //  step)
+    //- After a step: print the line if it is due; last: after the run's
+    //  last step (a step at the end time leaves its line to that call)
     void step
     (
         const Time& runTime,
@@ -293,7 +280,7 @@ public:
     )
     {
         const scalar done = (runTime.value() - t0_)/span_;
-        if (!(last || done >= next_ - SMALL))
+        if (!last && (done < next_ - SMALL || done > 1 - SMALL))
         {
             return;
         }
@@ -384,13 +371,14 @@ int main(int argc, char *argv[])
     {
         ++runTime;
 
-        driver.solve(noExternalForces);
+        // One solve a step: its final
+        driver.solve(noExternalForces, true);
         ++nSteps;
         if (modelReport.valid())
         {
             modelReport->track();
         }
-        nSolves += driver.motion().nSolves();
+        nSolves += driver.step().nSolves();
 
         if (everyStep || (driver.report() && runTime.writeTime()))
         {
@@ -407,11 +395,15 @@ int main(int argc, char *argv[])
 
         if (!everyStep)
         {
-            progress.step(runTime, nSteps, clock, lastStep(runTime));
+            progress.step(runTime, nSteps, clock, false);
         }
     }
+    if (!everyStep)
+    {
+        progress.step(runTime, nSteps, clock, true);
+    }
 
-    // The last step's rows, where they were not written at a write time
+    // The tables flushed
     driver.end();
 
     const scalar wall = clock.elapsedTime();

@@ -22,6 +22,7 @@ License
 
 #include "rigidBodyDriver.H"
 #include "keywordTable.H"
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -51,6 +52,64 @@ addRigidBodyKeywords
     "translationDirection", "translationOuterDistance"
 );
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The live drivers
+Foam::DynamicList<Foam::RBD::rigidBodyDriver*>& liveDrivers()
+{
+    static Foam::DynamicList<Foam::RBD::rigidBodyDriver*> drivers;
+    return drivers;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyDriver::registerForExit(rigidBodyDriver* driver)
+{
+    // A FatalError elsewhere (the flow's, a function object's) ends the
+    // process with exit(), which destroys no driver: its summary is then
+    // printed and its tables flushed by endAtExit
+    static bool registered = false;
+    if (!registered)
+    {
+        registered = (std::atexit(endAtExit) == 0);
+    }
+    liveDrivers().append(driver);
+}
+
+
+void Foam::RBD::rigidBodyDriver::unregisterForExit(rigidBodyDriver* driver)
+{
+    DynamicList<rigidBodyDriver*>& drivers = liveDrivers();
+    DynamicList<rigidBodyDriver*> others(drivers.size());
+    for (rigidBodyDriver* d : drivers)
+    {
+        if (d != driver)
+        {
+            others.append(d);
+        }
+    }
+    drivers.transfer(others);
+}
+
+
+void Foam::RBD::rigidBodyDriver::endAtExit()
+{
+    // Nothing that can fail: no step is committed here (the one open at a
+    // FatalError is unfinished)
+    for (rigidBodyDriver* d : liveDrivers())
+    {
+        d->atExit();
+    }
+    liveDrivers().clear();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::rigidBodyDriver::rigidBodyDriver
@@ -70,23 +129,25 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     externalForces_(externalForces),
     tableEveryStep_(true),
     residual_(coeffs, motion_.model(), externalForces),
-    names_(coeffs.subDict("bodies").toc()),
-    bodyIDs_(names_.size()),
-    dofs_(names_.size()),
-    startTimeName_(runTime.timeName()),
-    rows_(names_.size()),
+    step_(),
+    unsaidFinal_(false),
+    tables_
+    (
+        runTime.globalPath()/"postProcessing"/name/runTime.timeName(),
+        coeffs,
+        motion_.model(),
+        externalForces
+    ),
+    failure_
+    (
+        runTime,
+        name,
+        runTime.globalPath()/"postProcessing"/name/runTime.timeName(),
+        coeffs
+    ),
     tau_(motion_.model().nDoF(), Zero),
-    fx_(motion_.model().nBodies(), Zero),
-    tauR_(motion_.model().nDoF(), Zero),
-    fxR_(motion_.model().nBodies(), Zero),
-    coeffs_(coeffs)
+    fx_(motion_.model().nBodies(), Zero)
 {
-    forAll(names_, bi)
-    {
-        bodyIDs_[bi] = model().bodyID(names_[bi]);
-        dofs_[bi] = model().bodyDoFs(bodyIDs_[bi]);
-    }
-
     checkSignature(stateDict);
 
     // The motion's amplitudes for the coupling's residual, if written
@@ -97,15 +158,15 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     if (!coeffs.found("t") && !stateDict.found("t"))
     {
         motion_.state().t() = runTime.value();
-        motion_.newTime();
     }
 
-    // A row for the start, where its forces are known (no external forces:
-    // a fluid's are known only once the first solve has computed them)
-    if (!externalForces_)
-    {
-        writeRows(false);
-    }
+    // The start committed as the first step's (the restraints' own states
+    // start there), with its row where its forces are known (no external
+    // forces: a fluid's are known only once the first solve has computed
+    // them)
+    commitState(!externalForces_, false);
+
+    registerForExit(this);
 
     constructionTraps_.release();
 }
@@ -130,44 +191,129 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
 {}
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
-void Foam::RBD::rigidBodyDriver::commitStep()
+Foam::RBD::rigidBodyDriver::~rigidBodyDriver()
 {
-    coupledStep& step = motion_.step();
-    if (!step.uncommitted())
-    {
-        return;
-    }
-
-    reportCoupling();
-
-    // The row of the step is made from its last solve
-    if (tableEveryStep_ || step.atWriteTime())
-    {
-        // On disk at least at every write time (the row's, written at the
-        // start of the next step), and at every row where a fluid acts: a
-        // CFD step costs far more than a flush, and a flow solver that
-        // dies of its own FatalError or signal leaves the rows up to it
-        writeRows(step.atWriteTime() || externalForces_);
-    }
-
-    step.commit();
+    unregisterForExit(this);
+    end();
 }
 
 
-void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyDriver::commitState(const bool row, const bool flush)
 {
-    // The start of a new time step: the step before committed first
-    if (motion_.step().isNew(time_.timeIndex()))
+    // The row's restraint forces are those of the step's end, evaluated
+    // before the commit; its restraint columns show the committed states.
+    // A row that is not finite fails the step, whose start is still state0
+    if (row)
     {
-        commitStep();
-        motion_.newTime(time_.timeIndex());
+        tables_.restraintForces(motion_);
     }
-    motion_.step().corrector(time_.writeTime());
+    motion_.commitRestraints();
+    if (row)
+    {
+        tables_.fill(motion_, residual_, fx_);
+        if (Pstream::master())
+        {
+            check(failure_.rows(tables_));
+        }
+    }
+
+    motion_.newTime();
+
+    if (row)
+    {
+        tables_.write(flush);
+    }
+}
+
+
+void Foam::RBD::rigidBodyDriver::commitStep()
+{
+    reportCoupling();
+
+    // On disk at least at every write time, and at every row where a fluid
+    // acts: a CFD step costs far more than a flush, and a flow solver that
+    // dies of its own FatalError or signal leaves the rows up to it
+    commitState
+    (
+        tableEveryStep_ || step_.atWriteTime(),
+        step_.atWriteTime() || externalForces_
+    );
+
+    step_.commit();
+}
+
+
+void Foam::RBD::rigidBodyDriver::beginCorrector()
+{
+    const label timeIndex = time_.timeIndex();
+
+    if (step_.now() == coupledStep::stage::ended)
+    {
+        FatalErrorInFunction
+            << "The rigid-body motion (" << name_ << ") was solved at t = "
+            << time_.value() << " s, after the run's end" << nl
+            << exit(FatalError);
+    }
+
+    if (step_.open() && timeIndex != step_.timeIndex())
+    {
+        // The front-end did not say which corrector ended the step before:
+        // it ends where the next begins
+        if (!unsaidFinal_)
+        {
+            WarningInFunction
+                << "The rigid-body motion (" << name_ << "): time step "
+                << step_.timeIndex() << " had no final corrector. Its last"
+                << " solve is committed as the next step begins; the front"
+                << " end should say which corrector is final." << endl;
+            unsaidFinal_ = true;
+        }
+        commitStep();
+    }
+    else if
+    (
+        step_.now() == coupledStep::stage::committed
+     && timeIndex == step_.timeIndex()
+    )
+    {
+        FatalErrorInFunction
+            << "The rigid-body motion (" << name_ << ") was solved again at"
+            << " t = " << time_.value() << " s, after the final corrector of"
+            << " its time step: a step ends once. The front-end must solve"
+            << " the bodies in each outer corrector up to the final one, and"
+            << " not after it." << nl
+            << exit(FatalError);
+    }
+
+    if (!step_.open())
+    {
+        // After a failed step (a FatalError thrown, as in a test), the
+        // state is back at that step's start: committed again there
+        if (step_.now() == coupledStep::stage::failed)
+        {
+            motion_.newTime();
+        }
+        step_.begin(timeIndex, time_.writeTime());
+    }
+
+    step_.corrector();
+}
+
+
+void Foam::RBD::rigidBodyDriver::solve
+(
+    const Field<spatialVector>& fx,
+    const bool finalCorrector
+)
+{
+    beginCorrector();
 
     fx_ = fx;
-    checkExternalForces(fx_);
+    check(failure_.externalForces(model(), fx_));
 
     if (Pstream::master())
     {
@@ -192,9 +338,10 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
         }
     }
     Pstream::scatter(motion_.state());
+    step_.solved(motion_.nIter());
 
     // Every processor has the state: all stop together if it is not finite
-    checkState();
+    check(failure_.state(motion_));
 
     if (externalForces_)
     {
@@ -203,35 +350,71 @@ void Foam::RBD::rigidBodyDriver::solve(const Field<spatialVector>& fx)
         floatingPointTraps traps;
         Pstream::scatter(residual_.residual());
         residual_.solved();
-        motion_.step().measured(residual_.maxResidual());
+        step_.measured(residual_.maxResidual());
+    }
+
+    if (finalCorrector)
+    {
+        floatingPointTraps traps;
+        commitStep();
     }
 }
 
 
 void Foam::RBD::rigidBodyDriver::end()
 {
-    if (motion_.step().now() == coupledStep::stage::ended)
+    if (step_.now() == coupledStep::stage::ended)
     {
         return;
     }
 
     floatingPointTraps traps;
-    commitStep();
-    reportSummary();
 
-    forAll(tables_, bi)
+    // A step whose final corrector was not said
+    if (step_.open())
     {
-        tables_[bi].flush();
+        commitStep();
     }
 
-    motion_.step().end();
+    atExit();
+}
+
+
+void Foam::RBD::rigidBodyDriver::atExit()
+{
+    if (step_.now() == coupledStep::stage::ended)
+    {
+        return;
+    }
+
+    reportSummary();
+    tables_.flush();
+    step_.end();
+}
+
+
+void Foam::RBD::rigidBodyDriver::check(const string& failure)
+{
+    if (failure.empty())
+    {
+        return;
+    }
+
+    floatingPointTraps traps;
+
+    // Back to the start of the step, the last state that was finite, with
+    // no row or coupling report of the failed step due (where FatalError
+    // throws, as in a test, the driver can go on from there)
+    motion_.state() = motion_.state0();
+    step_.fail();
+    failure_.stop(motion_, tables_, failure);
 }
 
 
 bool Foam::RBD::rigidBodyDriver::read(const dictionary& coeffs)
 {
     report_ = coeffs.getOrDefault<Switch>("report", false);
-    coeffs_ = coeffs;
+    failure_.read(coeffs);
     residual_.read(coeffs);
     return motion_.read(motionDict(time_, coeffs, externalForces_));
 }

@@ -24,26 +24,6 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::RBD::rigidBodyDriver::bodyResidual
-(
-    const label bi,
-    label& dof
-) const
-{
-    scalar r = 0;
-    dof = -1;
-    for (const label i : dofs_[bi])
-    {
-        if (residual_.residual()[i] > r || dof < 0)
-        {
-            r = residual_.residual()[i];
-            dof = i;
-        }
-    }
-    return r;
-}
-
-
 void Foam::RBD::rigidBodyDriver::reportCoupling()
 {
     if (!externalForces_)
@@ -60,25 +40,25 @@ void Foam::RBD::rigidBodyDriver::reportCoupling()
     Info<< "rigidBodyMotion: coupling of the step to t = " << t << ": "
         << motion_.nSolves() << " solves, " << motion_.coupling().type()
         << ", residual";
-    forAll(names_, bi)
+    forAll(tables_.names(), bi)
     {
         label dof = -1;
-        const scalar r = bodyResidual(bi, dof);
+        const scalar r = residual_.largest(tables_.dofs(bi), dof);
         if (dof >= 0)
         {
-            Info<< ' ' << names_[bi] << ' ' << r;
+            Info<< ' ' << tables_.names()[bi] << ' ' << r;
         }
     }
     Info<< endl;
 
-    forAll(names_, bi)
+    forAll(tables_.names(), bi)
     {
         label dof = -1;
-        const scalar r = bodyResidual(bi, dof);
+        const scalar r = residual_.largest(tables_.dofs(bi), dof);
         if (dof >= 0 && r > residual_.tolerance())
         {
             Info<< "rigidBodyMotion: coupling not converged at t = " << t
-                << ": body " << names_[bi] << ", " << dofName(dof).c_str()
+                << ": body " << tables_.names()[bi] << ", " << model().dofDescription(dof).c_str()
                 << (residual_.rotation(dof) ? ", rotation" : ", translation")
                 << ": residual " << r << " > couplingTolerance "
                 << residual_.tolerance() << endl;
@@ -96,11 +76,11 @@ void Foam::RBD::rigidBodyDriver::reportFloors() const
 
     Info<< "rigidBodyMotion: coupling residual's floors (below them a body"
         << " counts as at rest):" << nl;
-    forAll(names_, bi)
+    forAll(tables_.names(), bi)
     {
-        for (const label i : dofs_[bi])
+        for (const label i : tables_.dofs(bi))
         {
-            Info<< "    " << dofName(i).c_str() << ' '
+            Info<< "    " << model().dofDescription(i).c_str() << ' '
                 << residual_.floors()[i];
             if (residual_.rotation(i))
             {
@@ -132,7 +112,7 @@ void Foam::RBD::rigidBodyDriver::reportSummary() const
     {
         Info<< "; the largest residual " << residual_.worst() << " at t = "
             << residual_.worstTime() << ", "
-            << dofName(residual_.worstDoF()).c_str();
+            << model().dofDescription(residual_.worstDoF()).c_str();
     }
     Info<< endl;
     if (residual_.nFlagged())

@@ -21,7 +21,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyDriver.H"
-#include "allFinite.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -31,16 +30,7 @@ void Foam::RBD::rigidBodyDriver::status(const label bodyID)
     const spatialTransform CofR(motion_.X0(bodyID));
     const spatialVector vCofR(motion_.v(bodyID, Zero));
 
-    if (!allFinite(CofR.r()) || !allFinite(CofR.E()) || !allFinite(vCofR))
-    {
-        stepFailed
-        (
-            "The status of body " + model().name(bodyID) + " at t = "
-          + Foam::name(motion_.state().t()) + " is not finite: centre of"
-          + " rotation " + Foam::name(CofR.r()) + ", velocity "
-          + Foam::name(vCofR)
-        );
-    }
+    check(failure_.status(motion_, bodyID, CofR, vCofR));
 
     Info<< "Rigid-body motion of the " << model().name(bodyID) << nl
         << "    Centre of rotation: " << CofR.r() << nl

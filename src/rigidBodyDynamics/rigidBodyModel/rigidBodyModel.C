@@ -586,6 +586,25 @@ Foam::labelList Foam::RBD::rigidBodyModel::bodyDoFs(const label bodyID) const
 }
 
 
+Foam::string Foam::RBD::rigidBodyModel::dofDescription(const label i) const
+{
+    for (const word& name : bodyNames())
+    {
+        const label id = bodyID(name);
+        if (isMerged(id) || !bodyDoFs(id).found(i))
+        {
+            continue;
+        }
+        const joint& J = joints()[id];
+        const bool composite = bodyDoFs(id).size() > J.nDoF();
+        return
+            "degree of freedom " + Foam::name(i) + ", of the joint of body "
+          + name + " (" + (composite ? word("composite") : J.type()) + ")";
+    }
+    return "degree of freedom " + Foam::name(i);
+}
+
+
 Foam::wordList Foam::RBD::rigidBodyModel::bodyNames() const
 {
     DynamicList<word> names;

@@ -399,9 +399,9 @@ void Foam::RBD::rigidBodyMotion::initialAcceleration()
         state0_.setQDdotValid(true);
         state_.qDdot() = state0_.qDdot();
         state_.setQDdotValid(true);
-        step_.startProvisional();
+        provisionalStart_ = true;
     }
-    else if (step_.provisionalStart())
+    else if (provisionalStart_)
     {
         if (externalForces_ && coupling_->relaxesStart())
         {
@@ -458,7 +458,9 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
     ws_(model_),
     wsValid_(false),
     nIter_(1),
-    step_(),
+    nSolves_(0),
+    restraintsCommitted_(false),
+    provisionalStart_(false),
     tauGiven_(model_.nDoF(), Zero),
     fxGiven_(model_.nBodies(), Zero),
     externalForces_(false),
@@ -502,7 +504,7 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 const Foam::RBD::rigidBodyModelWorkspace&
-Foam::RBD::rigidBodyMotion::workspace()
+Foam::RBD::rigidBodyMotion::workspace() const
 {
     if (!wsValid_)
     {
@@ -528,16 +530,21 @@ void Foam::RBD::rigidBodyMotion::commitRestraints()
             restraints_[ri].commit(state_, ws);
         }
     }
+    restraintsCommitted_ = true;
 }
 
 
-void Foam::RBD::rigidBodyMotion::newTime(const label timeIndex)
+void Foam::RBD::rigidBodyMotion::newTime()
 {
     // The restraints with states of their own start their step here
-    commitRestraints();
+    if (!restraintsCommitted_)
+    {
+        commitRestraints();
+    }
 
     state0_ = state_;
-    step_.begin(timeIndex);
+    nSolves_ = 0;
+    provisionalStart_ = false;
 }
 
 
@@ -562,6 +569,7 @@ void Foam::RBD::rigidBodyMotion::solve
 
     deltaT_ = deltaT;
     momentsValid_ = false;
+    restraintsCommitted_ = false;
 
     initialAcceleration();
 
@@ -570,8 +578,8 @@ void Foam::RBD::rigidBodyMotion::solve
 
     for (label iter = 0; iter < nIter_; ++iter)
     {
-        solver_->solve(state0_, state_, *this, step_.firstSolve());
-        step_.solved();
+        solver_->solve(state0_, state_, *this, nSolves_ == 0);
+        ++nSolves_;
 
         // The prescribed rates met at the end of the solve, whatever the
         // relaxation and the scheme left
@@ -624,7 +632,10 @@ void Foam::RBD::rigidBodyMotion::restraintForces
 }
 
 
-Foam::spatialTransform Foam::RBD::rigidBodyMotion::X0(const label bodyID)
+Foam::spatialTransform Foam::RBD::rigidBodyMotion::X0
+(
+    const label bodyID
+) const
 {
     return model_.X0(bodyID, workspace());
 }
@@ -634,7 +645,7 @@ Foam::spatialVector Foam::RBD::rigidBodyMotion::v
 (
     const label bodyID,
     const vector& p
-)
+) const
 {
     return model_.v(bodyID, p, workspace());
 }

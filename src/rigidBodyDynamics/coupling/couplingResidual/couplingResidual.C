@@ -247,3 +247,23 @@ void Foam::RBD::couplingResidual::readAmplitudes(const dictionary& stateDict)
         sign_ = sign;
     }
 }
+
+
+Foam::scalar Foam::RBD::couplingResidual::largest
+(
+    const labelList& dofs,
+    label& dof
+) const
+{
+    scalar r = 0;
+    dof = -1;
+    for (const label i : dofs)
+    {
+        if (residual_[i] > r || dof < 0)
+        {
+            r = residual_[i];
+            dof = i;
+        }
+    }
+    return r;
+}

@@ -20,16 +20,50 @@ License
     <https://www.gnu.org/licenses/>.
 \*---------------------------------------------------------------------------*/
 
-#include "rigidBodyDriver.H"
+#include "rigidBodyTables.H"
 #include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::rigidBodyTables::rigidBodyTables
+(
+    const fileName& dir,
+    const dictionary& coeffs,
+    const rigidBodyModel& model,
+    const bool externalForces
+)
+:
+    dir_(dir),
+    externalForces_(externalForces),
+    names_(coeffs.subDict("bodies").toc()),
+    bodyIDs_(names_.size()),
+    dofs_(names_.size()),
+    rows_(names_.size()),
+    tauR_(model.nDoF(), Zero),
+    fxR_(model.nBodies(), Zero)
+{
+    forAll(names_, bi)
+    {
+        bodyIDs_[bi] = model.bodyID(names_[bi]);
+        dofs_[bi] = model.bodyDoFs(bodyIDs_[bi]);
+    }
+}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
+void Foam::RBD::rigidBodyTables::fillRow
+(
+    const label bi,
+    rigidBodyMotion& motion,
+    const couplingResidual& residual,
+    const Field<spatialVector>& fx,
+    tableRow& row
+) const
 {
-    const rigidBodyModel& model = motion_.model();
-    const rigidBodyModelWorkspace& ws = motion_.workspace();
-    const rigidBodyModelState& state = motion_.state();
+    const rigidBodyModel& model = motion.model();
+    const rigidBodyModelWorkspace& ws = motion.workspace();
+    const rigidBodyModelState& state = motion.state();
 
     const label id = bodyIDs_[bi];
     const label master = model.masterID(id);
@@ -53,8 +87,8 @@ void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
     }
     if (externalForces_)
     {
-        row.add("fluidForce", fx_[master].l());
-        row.add("fluidMoment", fx_[master].w());
+        row.add("fluidForce", fx[master].l());
+        row.add("fluidMoment", fx[master].w());
     }
     row.add("restraintForce", fxR_[master].l());
     row.add("restraintMoment", fxR_[master].w());
@@ -67,9 +101,9 @@ void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
     if (externalForces_)
     {
         label dof = -1;
-        row.add("couplingResidual", bodyResidual(bi, dof));
+        row.add("couplingResidual", residual.largest(dofs_[bi], dof));
     }
-    for (const restraint& r : motion_.restraints())
+    for (const restraint& r : motion.restraints())
     {
         if (r.bodyID() == id)
         {
@@ -79,11 +113,11 @@ void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
 
     // A prescribed joint's driving force: in a forced oscillation, what the
     // fluid and the body's own inertia take
-    const labelList& prescribing = motion_.prescribing();
+    const labelList& prescribing = motion.prescribing();
     forAll(prescribing, s)
     {
-        const restraint& r = motion_.restraints()[prescribing[s]];
-        const rateConstraint& c = motion_.prescriptions()[s];
+        const restraint& r = motion.restraints()[prescribing[s]];
+        const rateConstraint& c = motion.prescriptions()[s];
         if (c.dof >= 0 && r.bodyID() == id)
         {
             row.add(r.name() + ".force", c.moment);
@@ -93,41 +127,53 @@ void Foam::RBD::rigidBodyDriver::fillRow(const label bi, tableRow& row)
 }
 
 
-void Foam::RBD::rigidBodyDriver::writeRows(const bool flush)
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodyTables::restraintForces(rigidBodyMotion& motion)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    tauR_ = Zero;
+    fxR_ = Zero;
+    motion.restraintForces(tauR_, fxR_);
+}
+
+
+void Foam::RBD::rigidBodyTables::fill
+(
+    rigidBodyMotion& motion,
+    const couplingResidual& residual,
+    const Field<spatialVector>& fx
+)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    forAll(rows_, bi)
+    {
+        fillRow(bi, motion, residual, fx, rows_[bi]);
+    }
+}
+
+
+void Foam::RBD::rigidBodyTables::write(const bool flush)
 {
     if (!Pstream::master())
     {
         return;
     }
 
-    floatingPointTraps traps;
-
-    // The restraints' forces at the state now, the step's end; then their
-    // own states committed there, which the rows show (the coupling's
-    // trial evaluations never reach the table)
-    tauR_ = Zero;
-    fxR_ = Zero;
-    motion_.restraintForces(tauR_, fxR_);
-    motion_.commitRestraints();
-
-    forAll(rows_, bi)
-    {
-        fillRow(bi, rows_[bi]);
-    }
-    checkRows();
-
     if (tables_.empty())
     {
-        const fileName dir
-        (
-            time_.globalPath()/"postProcessing"/name_/startTimeName_
-        );
-        mkDir(dir);
+        mkDir(dir_);
 
         tables_.setSize(names_.size());
         forAll(names_, bi)
         {
-            tables_.set(bi, new OFstream(dir/names_[bi] + ".dat"));
+            tables_.set(bi, new OFstream(dir_/names_[bi] + ".dat"));
             OFstream& os = tables_[bi];
             os.precision(IOstream::defaultPrecision());
             os  << "# Motion of body " << names_[bi] << ": SI units; forces"
@@ -144,5 +190,14 @@ void Foam::RBD::rigidBodyDriver::writeRows(const bool flush)
         {
             os.flush();
         }
+    }
+}
+
+
+void Foam::RBD::rigidBodyTables::flush()
+{
+    forAll(tables_, bi)
+    {
+        tables_[bi].flush();
     }
 }

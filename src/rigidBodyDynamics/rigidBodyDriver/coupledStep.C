@@ -28,7 +28,6 @@ License
 Foam::RBD::coupledStep::coupledStep()
 :
     stage_(stage::initial),
-    start_(startAccelerations::known),
     timeIndex_(-1),
     nCorrectors_(0),
     nSolves_(0),
@@ -39,69 +38,26 @@ Foam::RBD::coupledStep::coupledStep()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::RBD::coupledStep::isNew(const label timeIndex) const
+void Foam::RBD::coupledStep::begin(const label timeIndex, const bool writeTime)
 {
-    return
-        timeIndex != timeIndex_
-     || stage_ == stage::initial
-     || stage_ == stage::failed;
-}
-
-
-Foam::scalar Foam::RBD::coupledStep::pimpleResidual() const
-{
-    // PIMPLE's residualControl ends the correctors, from the 2nd on, at the
-    // first check that passes, and then runs one more.  The step's 1st
-    // solve has the previous step's forces: never converged.  Its 2nd has
-    // those of the fluid's 1st corrector, whose own fields have not
-    // converged, so the next corrector can still move the forces by more
-    // than the residual says: its residual counts twice, a margin that
-    // keeps PIMPLE from stopping on a residual that only looks small.  So
-    // a step takes 3 correctors at least
-    if (nCorrectors_ <= 1)
-    {
-        return GREAT;
-    }
-    if (nCorrectors_ == 2)
-    {
-        return 2*residual_;
-    }
-    return residual_;
-}
-
-
-void Foam::RBD::coupledStep::begin(const label timeIndex)
-{
-    stage_ = stage::begun;
-    start_ = startAccelerations::known;
+    stage_ = stage::solving;
     timeIndex_ = timeIndex;
     nCorrectors_ = 0;
     nSolves_ = 0;
-    atWriteTime_ = false;
+    atWriteTime_ = writeTime;
     residual_ = GREAT;
 }
 
 
-void Foam::RBD::coupledStep::corrector(const bool writeTime)
+void Foam::RBD::coupledStep::corrector()
 {
     ++nCorrectors_;
-    atWriteTime_ = writeTime;
-
-    // On every processor, where only the master solves
-    stage_ = stage::solving;
 }
 
 
-void Foam::RBD::coupledStep::solved()
+void Foam::RBD::coupledStep::solved(const label n)
 {
-    ++nSolves_;
-    stage_ = stage::solving;
-}
-
-
-void Foam::RBD::coupledStep::startProvisional()
-{
-    start_ = startAccelerations::provisional;
+    nSolves_ += n;
 }
 
 
@@ -120,7 +76,6 @@ void Foam::RBD::coupledStep::commit()
 void Foam::RBD::coupledStep::fail()
 {
     stage_ = stage::failed;
-    timeIndex_ = -1;
 }
 
 
