@@ -82,6 +82,21 @@ Usage
 
 using namespace Foam;
 
+// The mesh motion's entries, which a dynamicMeshDict holds: rigidBodySim
+// dry-runs one without the mesh motion's library, so it accepts them as
+// rigidBodyMeshMotion.C registers them (test/keywords compares the lists)
+addRigidBodyKeywords
+(
+    meshMotion, coefficients, "test", "rho", "rhoInf", "dynamicFvMesh",
+    "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs", "updateControl",
+    "updateInterval"
+);
+addRigidBodyKeywords
+(
+    meshMotion, body, "patches", "innerDistance", "outerDistance",
+    "translationDirection", "translationOuterDistance"
+);
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 namespace

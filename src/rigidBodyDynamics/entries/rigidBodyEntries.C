@@ -87,3 +87,48 @@ Foam::vector Foam::RBD::readAxis(const dictionary& dict, const word& key)
 
     return a/magA;
 }
+
+
+const Foam::entry& Foam::RBD::function1Entry
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " in " << dict.dictName()
+            << ": No Function1 dictionary entry: " << key << nl << nl << nl
+            << exit(FatalIOError);
+    }
+    return *e;
+}
+
+
+Foam::word Foam::RBD::function1Type(const entry& e)
+{
+    if (e.isDict())
+    {
+        return e.dict().getOrDefault<word>("type", word::null);
+    }
+
+    ITstream& is = e.stream();
+    const token first(is);
+    is.rewind();
+    return first.isWord() ? first.wordToken() : word::null;
+}
+
+
+const Foam::dictionary& Foam::RBD::function1Coeffs
+(
+    const dictionary& dict,
+    const entry& e
+)
+{
+    return
+        e.isDict()
+      ? e.dict()
+      : dict.optionalSubDict(word(e.keyword() + "Coeffs"));
+}

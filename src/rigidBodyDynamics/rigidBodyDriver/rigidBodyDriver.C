@@ -36,22 +36,6 @@ namespace RBD
 
 addRigidBodyCommonKeywords(coefficients, Driver, "report", "startFromDictionary");
 
-// What the mesh motion (rigidBodyMeshMotion) reads from the same
-// dictionaries; rigidBodySim, which dry-runs a dynamicMeshDict, knows them
-// too.  With the coefficients at the dynamicMeshDict's top level (no
-// rigidBodyMotionCoeffs), that level's entries are OpenFOAM's
-addRigidBodyKeywords
-(
-    meshMotion, coefficients, "test", "rho", "rhoInf", "dynamicFvMesh",
-    "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs", "updateControl",
-    "updateInterval"
-);
-addRigidBodyKeywords
-(
-    meshMotion, body, "patches", "innerDistance", "outerDistance",
-    "translationDirection", "translationOuterDistance"
-);
-
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace

@@ -22,6 +22,7 @@ License
 
 #include "rigidBodyMeshMotion.H"
 #include "rigidBodyEntries.H"
+#include "keywordTable.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -35,6 +36,23 @@ namespace Foam
         dictionary
     );
 }
+
+// What the mesh motion reads from the motion's dictionaries, beside the
+// library's own keywords.  With the coefficients at the dynamicMeshDict's
+// top level (no rigidBodyMotionCoeffs), that level's entries are
+// OpenFOAM's.  rigidBodySim, which dry-runs a dynamicMeshDict without this
+// library, registers the same lists (test/keywords compares them)
+addRigidBodyKeywords
+(
+    meshMotion, coefficients, "test", "rho", "rhoInf", "dynamicFvMesh",
+    "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs", "updateControl",
+    "updateInterval"
+);
+addRigidBodyKeywords
+(
+    meshMotion, body, "patches", "innerDistance", "outerDistance",
+    "translationDirection", "translationOuterDistance"
+);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

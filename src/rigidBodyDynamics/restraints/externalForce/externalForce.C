@@ -44,6 +44,14 @@ namespace restraints
 }
 
 
+const Foam::Enum<Foam::RBD::restraints::externalForce::frame>
+Foam::RBD::restraints::externalForce::frameNames
+({
+    {frame::global, "global"},
+    {frame::body, "body"}
+});
+
+
 Foam::RBD::restraints::externalForce::externalForce
 (
     const word& name,
@@ -63,28 +71,35 @@ Foam::RBD::restraints::externalForce::externalForce(const externalForce& ef)
     location_(ef.location_),
     force_(ef.force_->clone().ptr()),
     moment_(ef.moment_.valid() ? ef.moment_->clone().ptr() : nullptr),
-    bodyLocation_(ef.bodyLocation_),
-    bodyAxes_(ef.bodyAxes_)
+    locationFrame_(ef.locationFrame_),
+    forceFrame_(ef.forceFrame_)
 {}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::RBD::restraints::externalForce::readFrame
+Foam::RBD::restraints::externalForce::frame
+Foam::RBD::restraints::externalForce::readFrame
 (
     const dictionary& dict,
     const word& key
 )
 {
-    const word frame(dict.getOrDefault<word>(key, "global"));
-    if (frame != "global" && frame != "body")
+    const word name(dict.getOrDefault<word>(key, frameNames[frame::global]));
+    if (!frameNames.found(name))
     {
         FatalIOErrorInFunction(dict.lookup(key))
-            << "Entry " << key << ' ' << frame << " in " << dict.dictName()
-            << ": valid frames are global and body" << nl
-            << exit(FatalIOError);
+            << "Entry " << key << ' ' << name << " in " << dict.dictName()
+            << ": valid frames are";
+        forAll(frameNames, i)
+        {
+            FatalIOError
+                << (i == 0 ? " " : i + 1 < frameNames.size() ? ", " : " and ")
+                << frameNames.names()[i];
+        }
+        FatalIOError<< nl << exit(FatalIOError);
     }
-    return frame == "body";
+    return frameNames.get(name);
 }
 
 
@@ -102,9 +117,11 @@ void Foam::RBD::restraints::externalForce::restrain
 
     const vector p
     (
-        bodyLocation_ ? model_.globalPoint(bodyID_, location_, ws) : location_
+        locationFrame_ == frame::body
+      ? model_.globalPoint(bodyID_, location_, ws)
+      : location_
     );
-    if (bodyAxes_)
+    if (forceFrame_ == frame::body)
     {
         // Body axes to global: E maps global vectors to the body's
         const tensor Et(model_.X0(bodyID_, ws).E().T());
@@ -127,8 +144,8 @@ bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
     {
         moment_ = readFunction1<vector>(dict, "moment");
     }
-    bodyLocation_ = readFrame(dict, "locationFrame");
-    bodyAxes_ = readFrame(dict, "forceFrame");
+    locationFrame_ = readFrame(dict, "locationFrame");
+    forceFrame_ = readFrame(dict, "forceFrame");
     return true;
 }
 
@@ -142,6 +159,6 @@ void Foam::RBD::restraints::externalForce::write(Ostream& os) const
     {
         moment_->writeData(os);
     }
-    os.writeEntry("locationFrame", word(bodyLocation_ ? "body" : "global"));
-    os.writeEntry("forceFrame", word(bodyAxes_ ? "body" : "global"));
+    os.writeEntry("locationFrame", frameNames[locationFrame_]);
+    os.writeEntry("forceFrame", frameNames[forceFrame_]);
 }
