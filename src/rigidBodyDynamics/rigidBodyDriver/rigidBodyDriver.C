@@ -58,12 +58,15 @@ void Foam::RBD::rigidBodyDriver::registerForExit(rigidBodyDriver* driver)
     // A FatalError elsewhere (the flow's, a function object's) ends the
     // process with exit(), which destroys no driver: its summary is then
     // printed and its tables flushed by endAtExit
+    // The list made before endAtExit is registered: its destructor then
+    // runs after endAtExit, not before (exit runs them in reverse order)
+    DynamicList<rigidBodyDriver*>& drivers = liveDrivers();
     static bool registered = false;
     if (!registered)
     {
         registered = (std::atexit(endAtExit) == 0);
     }
-    liveDrivers().append(driver);
+    drivers.append(driver);
 }
 
 
