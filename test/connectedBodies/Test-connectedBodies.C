@@ -488,7 +488,7 @@ void prescribedHeave()
                 mag(m.state().qDot()[0] - A*w*Foam::cos(w*t))
             );
             model.inverseDynamics(m.state(), ws, fx, tau);
-            const scalar force = m.prescriptions()[0].moment;
+            const scalar force = m.prescriptions()[0].force;
             worstForce = max(worstForce, mag(force - tau[0]));
             worstFree = max(worstFree, mag(tau[1]));
             maxForce = max(maxForce, mag(force));

@@ -267,6 +267,34 @@ void checkTree(Random& rnd, const label n, const label firstJoint)
     );
 }
 
+//- A body's absolute rotation rate about a global axis, its motor in the
+//  joints below parentID (as restraints::prescribedRotation builds it)
+class rotationRate
+:
+    public RBD::rateConstraint
+{
+public:
+
+    label bodyID = -1;
+    label parentID = 0;
+    vector axis = Zero;
+
+    explicit rotationRate(const label nDoF)
+    :
+        RBD::rateConstraint(nDoF)
+    {}
+
+    virtual void linearise
+    (
+        const RBD::rigidBodyModel& model,
+        const RBD::rigidBodyModelWorkspace& ws
+    )
+    {
+        model.angularRow(bodyID, parentID, axis, ws, *this);
+    }
+};
+
+
 //- The body of a free-body model: on composite(TRANSLATION, ROTATION)
 std::string freeBodyModel
 (
@@ -366,14 +394,23 @@ void checkFreeBody(Random& rnd, const std::string& rotation, const label nChildr
 
     // Motors: on the free body (reaction on the root, then on its massless
     // parent) and on its first child (reaction on the free body)
-    List<RBD::rateConstraint> Cf(nChildren ? 3 : 2), Cc(Cf.size());
+    const label nC = nChildren ? 3 : 2;
+    PtrList<rotationRate> Cf(nC), Cc(nC);
+    UPtrList<RBD::rateConstraint> CfList(nC), CcList(nC);
     forAll(Cf, s)
     {
+        Cf.set(s, new rotationRate(free.nDoF()));
+        Cc.set(s, new rotationRate(chain.nDoF()));
+        CfList.set(s, &Cf[s]);
+        CcList.set(s, &Cc[s]);
         Cf[s].axis = normalised(vector(0.3 + s, 1 - 0.4*s, 0.5));
         Cf[s].rate = 1 + s;
         Cf[s].acceleration = 2 - s;
-        Cf[s].horizon = 0.1;
-        Cc[s] = Cf[s];
+        Cf[s].rateGain = 1/0.1;
+        Cc[s].axis = Cf[s].axis;
+        Cc[s].rate = Cf[s].rate;
+        Cc[s].acceleration = Cf[s].acceleration;
+        Cc[s].rateGain = Cf[s].rateGain;
     }
     Cf[0].bodyID = free.bodyID("b");
     Cc[0].bodyID = chain.bodyID("b");
@@ -413,9 +450,11 @@ void checkFreeBody(Random& rnd, const std::string& rotation, const label nChildr
     }
     wf.setConstraints(free, Cf.size());
     wc.setConstraints(chain, Cc.size());
+    free.kinematics(sf, wf);
+    chain.kinematics(sc, wc);
     scalarField qf(nDoF), qc(nDoF);
-    free.constrainedDynamics(tau, ff, Cf, wf, qf);
-    chain.constrainedDynamics(tau, fc, Cc, wc, qc);
+    free.constrainedDynamics(tau, ff, CfList, wf, qf);
+    chain.constrainedDynamics(tau, fc, CcList, wc, qc);
     const scalar scaleC = max(scalar(1), max(mag(qc)));
     test::checkAbs
     (
@@ -425,8 +464,8 @@ void checkFreeBody(Random& rnd, const std::string& rotation, const label nChildr
     scalar dMoment = 0, maxMoment = 1;
     forAll(Cf, s)
     {
-        dMoment = max(dMoment, mag(Cf[s].moment - Cc[s].moment));
-        maxMoment = max(maxMoment, mag(Cc[s].moment));
+        dMoment = max(dMoment, mag(Cf[s].force - Cc[s].force));
+        maxMoment = max(maxMoment, mag(Cc[s].force));
     }
     test::checkAbs
     (

@@ -99,7 +99,7 @@ scalar angularMomentum(RBD::rigidBodyMotion& m, const vector& axis)
 //  prescriptions), the state now
 scalar moment(RBD::rigidBodyMotion& m, const label s)
 {
-    return m.prescriptions()[s].moment;
+    return m.prescriptions()[s].force;
 }
 
 

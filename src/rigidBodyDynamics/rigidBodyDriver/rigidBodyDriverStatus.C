@@ -39,27 +39,12 @@ void Foam::RBD::rigidBodyDriver::status(const label bodyID)
         << "    Angular velocity: " << vCofR.w()
         << endl;
 
-    // The body's prescribed rotations: rate, prescription, motor moment
-    const labelList& prescribing = motion_.prescribing();
-    forAll(prescribing, s)
+    // The body's prescriptions: a line each
+    forAll(motion_.prescribing(), s)
     {
-        const RBD::restraint& r = motion_.restraints()[prescribing[s]];
-        if (r.bodyID() == bodyID)
+        if (motion_.prescribing()[s].bodyID() == bodyID)
         {
-            const rateConstraint& c = motion_.prescriptions()[s];
-            if (c.dof >= 0)
-            {
-                Info<< "    Prescribed motion " << r.name() << ": q "
-                    << motion_.state().q()[c.dof] << " (prescribed "
-                    << c.position << "), qDot "
-                    << motion_.state().qDot()[c.dof] << " (prescribed "
-                    << c.rate << "), driving force " << c.moment << endl;
-                continue;
-            }
-            Info<< "    Prescribed rotation " << r.name() << ": omega "
-                << (c.axis & vCofR.w()) << " rad/s about " << c.axis
-                << " (prescribed " << c.rate << "), motor moment "
-                << c.moment << " N m" << endl;
+            motion_.prescriptions()[s].writeStatus(motion_.state(), vCofR);
         }
     }
 }

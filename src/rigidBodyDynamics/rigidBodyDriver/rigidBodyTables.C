@@ -111,16 +111,13 @@ void Foam::RBD::rigidBodyTables::fillRow
         }
     }
 
-    // A prescribed joint's driving force: in a forced oscillation, what the
-    // fluid and the body's own inertia take
-    const labelList& prescribing = motion.prescribing();
-    forAll(prescribing, s)
+    // The prescriptions' own columns (a prescribed joint's driving force)
+    const UPtrList<prescription>& prescriptions = motion.prescriptions();
+    forAll(prescriptions, s)
     {
-        const restraint& r = motion.restraints()[prescribing[s]];
-        const rateConstraint& c = motion.prescriptions()[s];
-        if (c.dof >= 0 && r.bodyID() == id)
+        if (prescriptions[s].bodyID() == id)
         {
-            row.add(r.name() + ".force", c.moment);
+            prescriptions[s].addMotorColumns(row);
         }
     }
     row.end();

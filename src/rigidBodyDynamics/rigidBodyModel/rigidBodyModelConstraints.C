@@ -20,12 +20,13 @@ License
     <https://www.gnu.org/licenses/>.
 -------------------------------------------------------------------------------
 Description
-    Prescribed rotation rates met exactly (rateConstraint), as
-    Featherstone, Rigid Body Dynamics Algorithms (2008), section 9.2: each
-    motor's response to a unit moment through the articulated-body
-    algorithm's acceleration pass, the small system of the motors'
-    moments (one equation per constraint) solved, and the responses added
-    to the free accelerations; the same for impulses on the velocities.
+    Prescribed rates met exactly (rateConstraint: a row in joint space and
+    a target), as Featherstone, Rigid Body Dynamics Algorithms (2008),
+    section 9.2: each motor's response to a unit force through the
+    articulated-body algorithm's acceleration pass, the small system of the
+    motors' forces (one equation per constraint) solved, and the responses
+    added to the free accelerations; the same for impulses on the
+    velocities.
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyModel.H"
@@ -39,22 +40,75 @@ using namespace Foam::RBD::spatialKernels;
 Foam::scalar Foam::RBD::rigidBodyModel::rate
 (
     const rateConstraint& c,
-    const scalarField& qDot,
-    const rigidBodyModelWorkspace& ws
+    const scalarField& qDot
 ) const
 {
-    if (c.dof >= 0)
+    // The row's zeros skipped: a unit row gives its entry of qDot exactly
+    const scalarField& row = c.row;
+    scalar r = 0;
+    forAll(row, j)
     {
-        return qDot[c.dof];
+        if (row[j] != 0)
+        {
+            r += row[j]*qDot[j];
+        }
     }
+    return r;
+}
+
+
+void Foam::RBD::rigidBodyModel::angularRow
+(
+    const label bodyID,
+    const label parentID,
+    const vector& axis,
+    const rigidBodyModelWorkspace& ws,
+    rateConstraint& c
+) const
+{
     updateX0(ws);
-    return (ws.X0[c.bodyID].E() & c.axis) & ws.v[c.bodyID].w();
+    c.row = Zero;
+    c.motor = Zero;
+    c.bias = 0;
+
+    // Up the tree from the body: each joint's angular columns, in its
+    // child's axes, against the axis in those axes; the joints below
+    // parentID hold the motor
+    bool motor = true;
+    for (label k = bodyID; k > 0; k = lambda_[k])
+    {
+        if (k == parentID)
+        {
+            motor = false;
+        }
+        const joint& Jk = joints_[k];
+        const label qi = Jk.qIndex();
+        const label unit = Jk.unitColumn();
+        const vector e(ws.X0[k].E() & axis);
+
+        for (label j = 0; j < Jk.nDoF(); ++j)
+        {
+            // A unit column e_(unit + j): angular if unit + j < 3
+            const scalar r =
+                unit >= 0
+              ? (unit + j < 3 ? e[unit + j] : 0)
+              : (e & ws.J[k].S[j].w());
+            c.row[qi + j] = r;
+            if (motor)
+            {
+                c.motor[qi + j] = r;
+            }
+        }
+
+        // The velocity products' share of the body's angular acceleration
+        c.bias += e & ws.c[k].w();
+    }
 }
 
 
 void Foam::RBD::rigidBodyModel::constraintResiduals
 (
-    const UList<rateConstraint>& C,
+    const UPtrList<rateConstraint>& C,
     const scalarField& qDdot,
     rigidBodyModelWorkspace& ws
 ) const
@@ -62,25 +116,30 @@ void Foam::RBD::rigidBodyModel::constraintResiduals
     forAll(C, r)
     {
         const rateConstraint& c = C[r];
-        if (c.dof >= 0)
-        {
-            // A joint's prescribed acceleration (its position and rate are
-            // met at the end of each solve, constrainState)
-            ws.motorMoments[r] = c.acceleration - qDdot[c.dof];
-            continue;
-        }
-        const vector e(ws.X0[c.bodyID].E() & c.axis);
-        const scalar omega = e & ws.v[c.bodyID].w();
         ws.motorMoments[r] =
-            c.acceleration + (c.rate - omega)/c.horizon
-          - (e & ws.a[c.bodyID].w());
+            c.acceleration + c.rateGain*(c.rate - rate(c, ws.qDot))
+          - (rate(c, qDdot) + c.bias);
+    }
+}
+
+
+void Foam::RBD::rigidBodyModel::linearise
+(
+    UPtrList<rateConstraint>& C,
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    updateX0(ws);
+    forAll(C, s)
+    {
+        C[s].linearise(*this, ws);
     }
 }
 
 
 void Foam::RBD::rigidBodyModel::unitMotorResponses
 (
-    const UList<rateConstraint>& C,
+    const UPtrList<rateConstraint>& C,
     rigidBodyModelWorkspace& ws
 ) const
 {
@@ -88,33 +147,19 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
     forAll(C, s)
     {
-        // The motor's unit moment about the axis on its body, the reaction
-        // on the body the joint is relative to: as external forces, -X0* f
-        // in the bias forces
+        // The motor's unit force: joint forces, motor, and no others
         ws.responseBias = Zero;
-        const rateConstraint& cs = C[s];
-
-        // A joint's motor is a unit force of the joint itself (added to its
-        // share u below); a rotation's, a unit moment about the axis
-        const label motorJoint = cs.dof >= 0 ? cs.bodyID : -1;
-        if (cs.dof < 0)
-        {
-            ws.responseBias[cs.bodyID] =
-                spatialVector(-(ws.X0[cs.bodyID].E() & cs.axis), Zero);
-            if (cs.parentID)
-            {
-                ws.responseBias[cs.parentID] =
-                    spatialVector(ws.X0[cs.parentID].E() & cs.axis, Zero);
-            }
-        }
+        const scalarField& f = C[s].motor;
 
         // Articulated bias forces of the response, leaves to root: as in
-        // articulatedBodyDynamics with no velocities, no gravity and no
-        // joint forces, on its articulated inertias (U as it left them)
+        // articulatedBodyDynamics with no velocities, no gravity and the
+        // motor's joint forces, on its articulated inertias (U as it left
+        // them)
         for (label i = nb - 1; i > 0; --i)
         {
             const joint& Ji = joints_[i];
             const label n = Ji.nDoF();
+            const label qi = Ji.qIndex();
             const label rotation = XlambdaRotation(i);
             const FixedList<spatialVector, joint::maxDoF>& U = ws.U[i];
             spatialVector pa(ws.responseBias[i]);
@@ -127,18 +172,26 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
             }
             else if (freeParent_[i] >= 0)
             {
-                // A free body: as in articulatedBodyDynamics, with no joint
-                // forces (its S_w^-T as that left it in Dinv)
-                u = -pa.w();
+                // A free body: as in articulatedBodyDynamics (its S_w^-T
+                // as that left it in Dinv)
+                const label qp = joints_[p].qIndex();
+                u = (ws.Dinv[i] & vector(f[qi], f[qi + 1], f[qi + 2]))
+                  - pa.w();
                 ws.responseJointBias[p] =
-                    freeLinearForce(ws.Xlambda[i], Zero, ws.responseBias[p]) - pa.l();
+                    freeLinearForce
+                    (
+                        ws.Xlambda[i],
+                        vector(f[qp], f[qp + 1], f[qp + 2]),
+                        ws.responseBias[p]
+                    )
+                  - pa.l();
                 continue;
             }
 
             if (Ji.unitColumn() >= 0 && n == 1)
             {
                 // U is Xlambda^T U: the parent's share is taken whole
-                u.x() = -pa[Ji.unitColumn()] + (i == motorJoint ? 1 : 0);
+                u.x() = f[qi] - pa[Ji.unitColumn()];
                 if (p)
                 {
                     ws.responseBias[p] +=
@@ -150,11 +203,7 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
             for (label j = 0; j < n; ++j)
             {
-                u[j] = -(ws.J[i].S[j] && pa);
-            }
-            if (i == motorJoint)
-            {
-                u[cs.dof - Ji.qIndex()] += 1;
+                u[j] = f[qi + j] - (ws.J[i].S[j] && pa);
             }
             const vector Dinvu(ws.Dinv[i] & u);
             for (label j = 0; j < n; ++j)
@@ -172,11 +221,7 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
         forAll(C, r)
         {
-            const rateConstraint& cr = C[r];
-            ws.constraintMatrix(r, s) = cr.dof >= 0
-              ? ws.responseQDdot[s][cr.dof]
-              : (ws.X0[cr.bodyID].E() & cr.axis)
-              & ws.responseAcceleration[cr.bodyID].w();
+            ws.constraintMatrix(r, s) = rate(C[r], ws.responseQDdot[s]);
         }
     }
 }
@@ -184,7 +229,7 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
 void Foam::RBD::rigidBodyModel::solveConstraints
 (
-    const UList<rateConstraint>& C,
+    const UPtrList<rateConstraint>& C,
     rigidBodyModelWorkspace& ws
 ) const
 {
@@ -234,31 +279,18 @@ void Foam::RBD::rigidBodyModel::solveConstraints
 
 void Foam::RBD::rigidBodyModel::unmetConstraint
 (
-    const UList<rateConstraint>& C,
+    const UPtrList<rateConstraint>& C,
     const label k,
     const rigidBodyModelWorkspace& ws
 ) const
 {
-    if (C[k].dof >= 0)
-    {
-        FatalErrorInFunction
-            << "The prescribed motion of degree of freedom " << C[k].dof
-            << " (the joint of body " << bodies_[C[k].bodyID].name()
-            << ") cannot be met: another prescription already fixes it"
-            << " (the response of the prescriptions to the motors' forces"
-            << " is singular: " << ws.constraintMatrix << ")"
-            << exit(FatalError);
-    }
-
-    FatalErrorInFunction
-        << "The prescribed rotation of body "
-        << bodies_[C[k].bodyID].name() << " about " << C[k].axis
-        << " cannot be met: its joint does not turn it about that"
-        << " axis relative to "
-        << bodies_[C[k].parentID].name()
-        << ", or another prescription already fixes that rotation"
-        << " (the response of the prescribed rates to the motors'"
-        << " moments is singular: " << ws.constraintMatrix << ")"
+    OSstream& os = FatalErrorInFunction;
+    os  << "The prescription of ";
+    C[k].writeWhat(os);
+    os  << " cannot be met: its motor does not move it, or another"
+        << " prescription already fixes it (the response of the"
+        << " prescriptions to the motors' forces is singular: "
+        << ws.constraintMatrix << ")"
         << exit(FatalError);
 }
 
@@ -284,7 +316,7 @@ void Foam::RBD::rigidBodyModel::constrainedDynamics
 (
     const scalarField& tau,
     const Field<spatialVector>& fx,
-    UList<rateConstraint>& C,
+    UPtrList<rateConstraint>& C,
     rigidBodyModelWorkspace& ws,
     scalarField& qDdot
 ) const
@@ -296,9 +328,9 @@ void Foam::RBD::rigidBodyModel::constrainedDynamics
         return;
     }
 
-    // The motors' moments: what each constraint asks less what the body's
-    // acceleration is without them, through the responses to unit moments
-    updateX0(ws);
+    // The motors' forces: what each constraint asks less what its rate's
+    // change is without them, through the responses to unit forces
+    linearise(C, ws);
     constraintResiduals(C, qDdot, ws);
     unitMotorResponses(C, ws);
     solveConstraints(C, ws);
@@ -306,7 +338,7 @@ void Foam::RBD::rigidBodyModel::constrainedDynamics
     addResponses(ws, qDdot);
     forAll(C, s)
     {
-        C[s].moment = ws.motorMoments[s];
+        C[s].force = ws.motorMoments[s];
     }
 }
 
@@ -315,13 +347,13 @@ void Foam::RBD::rigidBodyModel::motorResponses
 (
     const rigidBodyModelState& state,
     rigidBodyModelWorkspace& ws,
-    const UList<rateConstraint>& C
+    UPtrList<rateConstraint>& C
 ) const
 {
     // The articulated inertias of the positions, with no forces
     kinematics(state, ws);
     articulatedBodyDynamics(ws.tauZero, ws.fxZero, ws, ws.qDdotScratch);
-    updateX0(ws);
+    linearise(C, ws);
     unitMotorResponses(C, ws);
 }
 
@@ -330,7 +362,7 @@ void Foam::RBD::rigidBodyModel::constrainState
 (
     rigidBodyModelState& state,
     rigidBodyModelWorkspace& ws,
-    UList<rateConstraint>& C
+    UPtrList<rateConstraint>& C
 ) const
 {
     if (C.empty())
@@ -338,45 +370,38 @@ void Foam::RBD::rigidBodyModel::constrainState
         return;
     }
 
-    // A joint's prescribed position, met exactly: its q alone moves
+    // The prescribed positions, if any, met exactly
     forAll(C, r)
     {
-        if (C[r].dof >= 0)
-        {
-            state.q()[C[r].dof] = C[r].position;
-        }
+        C[r].place(state.q());
     }
 
-    // The responses to the motors' unit moments (they depend on the
+    // The responses to the motors' unit forces (they depend on the
     // positions only)
     motorResponses(state, ws, C);
 
     // The motors' impulses that bring the rates to the constraints'
     forAll(C, r)
     {
-        ws.motorMoments[r] = C[r].rate - rate(C[r], state.qDot(), ws);
+        ws.motorMoments[r] = C[r].rate - rate(C[r], state.qDot());
     }
     solveConstraints(C, ws);
 
     addResponses(ws, state.qDot());
 
-    // At the new velocities, the change of the motors' moments that gives
-    // the accelerations the constraints ask
+    // At the new velocities, the change of the motors' forces that gives
+    // the rates' changes the constraints ask
     kinematics(state, ws);
-    bodyAccelerations(state.qDdot(), ws);
-    updateX0(ws);
+    linearise(C, ws);
     constraintResiduals(C, state.qDdot(), ws);
     solveConstraints(C, ws);
 
     addResponses(ws, state.qDdot());
 
-    // A joint's driving force: with the change that meets its acceleration
+    // Each motor's force with the change that meets its constraint
     forAll(C, r)
     {
-        if (C[r].dof >= 0)
-        {
-            C[r].moment += ws.motorMoments[r];
-        }
+        C[r].force += ws.motorMoments[r];
     }
 }
 

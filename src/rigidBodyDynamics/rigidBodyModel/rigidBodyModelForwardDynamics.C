@@ -58,6 +58,12 @@ void Foam::RBD::rigidBodyModel::kinematics
     ws.v[0] = Zero;
     ws.X0valid = false;
 
+    // The velocities, for the rate constraints' rows (none: not sized)
+    if (ws.qDot.size())
+    {
+        ws.qDot = qDot;
+    }
+
     for (label i = 1; i < nBodies(); ++i)
     {
         joint::XSvc& J = ws.J[i];

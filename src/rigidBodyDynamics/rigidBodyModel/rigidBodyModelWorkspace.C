@@ -68,6 +68,7 @@ void Foam::RBD::rigidBodyModelWorkspace::setConstraints
     responseBias.setSize(n, Zero);
     responseJointBias.setSize(n, Zero);
     responseAcceleration.setSize(n, Zero);
+    qDot.setSize(nDoF, Zero);
     responseQDdot.setSize(nConstraints);
     for (scalarField& r : responseQDdot)
     {

@@ -128,17 +128,34 @@ void Foam::RBD::rigidBodyMotion::readRestraints(const dictionary& dict)
         restraints_.append(restraint::New(e.keyword(), e.dict(), model_));
     }
 
-    DynamicList<label> prescribing;
-    forAll(restraints_, ri)
+    // The prescriptions, as themselves and as the model's constraints,
+    // and the restraints with states of their own
+    label nP = 0, nS = 0;
+    for (restraint& r : restraints_)
     {
-        if (restraints_[ri].prescribes())
+        nP += isA<prescription>(r) ? 1 : 0;
+        nS += isA<statefulRestraint>(r) ? 1 : 0;
+    }
+    prescribing_.setSize(nP);
+    prescriptions_.setSize(nP);
+    stateful_.setSize(nS);
+    nP = 0;
+    nS = 0;
+    for (restraint& r : restraints_)
+    {
+        prescription* p = dynamic_cast<prescription*>(&r);
+        if (p)
         {
-            prescribing.append(ri);
+            prescribing_.set(nP, p);
+            prescriptions_.set(nP++, p);
+        }
+        statefulRestraint* sr = dynamic_cast<statefulRestraint*>(&r);
+        if (sr)
+        {
+            stateful_.set(nS++, sr);
         }
     }
-    prescribing_ = prescribing;
-    prescriptions_.setSize(prescribing_.size());
-    ws_.setConstraints(model_, prescribing_.size());
+    ws_.setConstraints(model_, nP);
 }
 
 
@@ -149,75 +166,32 @@ void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
         return;
     }
 
-    // Each motor's response: the body's angular acceleration about the
-    // axis per unit moment, against that of the body on its own
+    // Each motor's response: the change of its rate per unit force
     prescribe(state_);
     model_.motorResponses(state_, ws_, prescriptions_);
     wsValid_ = true;
 
-    forAll(prescriptions_, s)
+    const dictionary& restraintsDict = dict.subDict("restraints");
+    forAll(prescribing_, s)
     {
-        const rateConstraint& c = prescriptions_[s];
+        const prescription& ps = prescribing_[s];
+        ps.checkMotor
+        (
+            ws_,
+            ws_.constraintMatrix(s, s),
+            restraintsDict.subDict(ps.name())
+        );
 
-        // A joint's degree of freedom prescribed twice
-        if (c.dof >= 0)
-        {
-            for (label r = 0; r < s; ++r)
-            {
-                if (prescriptions_[r].dof == c.dof)
-                {
-                    const restraint& rr = restraints_[prescribing_[r]];
-                    const restraint& rs = restraints_[prescribing_[s]];
-                    FatalIOErrorInFunction(dict.subDict("restraints"))
-                        << "Restraints " << rr.name() << " and "
-                        << rs.name() << " both prescribe the joint of body "
-                        << model_.name(rs.bodyID()) << ": give it one"
-                        << " prescription." << nl << exit(FatalIOError);
-                }
-            }
-            continue;
-        }
-
-        const rigidBodyInertia& body = model_.bodies()[c.bodyID];
-        const vector e(model_.X0(c.bodyID, ws_).E() & c.axis);
-        const scalar Ia = e & (body.Ic() & e);
-
-        if (!(ws_.constraintMatrix(s, s) > 1e-9/max(Ia, VSMALL)))
-        {
-            const restraint& r = restraints_[prescribing_[s]];
-            const joint& J = model_.joints()[c.bodyID];
-            const dictionary& rDict =
-                dict.subDict("restraints").subDict(r.name());
-            FatalIOErrorInFunction(rDict)
-                << "Restraint " << r.name() << " (" << r.type()
-                << ") prescribes the rotation of body "
-                << model_.name(r.bodyID()) << " about " << c.axis
-                << ", but its joint (" << J.type() << ") does not turn it"
-                << " about that axis relative to "
-                << model_.bodies()[c.parentID].name() << "." << nl
-                << "Give the body a joint that does (for an axis along a"
-                << " coordinate axis, e.g. Rx, Ry or Rz; for any axis, Ra"
-                << " with that axis, or Rs), or prescribe another axis."
-                << nl << exit(FatalIOError);
-        }
-
-        // One rotation prescribed twice
+        // One rate prescribed twice
         for (label r = 0; r < s; ++r)
         {
-            const rateConstraint& cr = prescriptions_[r];
-            if
-            (
-                cr.dof < 0 && cr.bodyID == c.bodyID
-             && mag(cr.axis ^ c.axis) < 1e-9
-            )
+            if (ps.sameRate(prescribing_[r]))
             {
-                const restraint& rr = restraints_[prescribing_[r]];
-                const restraint& rs = restraints_[prescribing_[s]];
-                FatalIOErrorInFunction(dict.subDict("restraints"))
-                    << "Restraints " << rr.name() << " and " << rs.name()
-                    << " both prescribe the rotation of body "
-                    << model_.name(rs.bodyID()) << " about " << c.axis
-                    << ": give it one prescription." << nl
+                OSstream& os = FatalIOErrorInFunction(restraintsDict);
+                os  << "Restraints " << prescribing_[r].name() << " and "
+                    << ps.name() << " both prescribe ";
+                ps.writeWhat(os);
+                os  << ": give it one prescription." << nl
                     << exit(FatalIOError);
             }
         }
@@ -229,12 +203,24 @@ void Foam::RBD::rigidBodyMotion::prescribe(const rigidBodyModelState& state)
 {
     forAll(prescribing_, s)
     {
-        restraints_[prescribing_[s]].prescribe
-        (
-            state,
-            deltaT_,
-            prescriptions_[s]
-        );
+        prescribing_[s].prescribe(state, deltaT_);
+    }
+}
+
+
+void Foam::RBD::rigidBodyMotion::startRestraints
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    if (!restraintsStarted_)
+    {
+        forAll(stateful_, si)
+        {
+            stateful_[si].start(state, ws);
+        }
+        restraintsStarted_ = true;
     }
 }
 
@@ -247,6 +233,7 @@ void Foam::RBD::rigidBodyMotion::evaluate
 {
     model_.kinematics(state, ws_);
     wsValid_ = (&state == &state_);
+    startRestraints(state, ws_);
     prescribe(state);
 
     forAll(tauTotal_, i)
@@ -451,6 +438,7 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
 )
 :
     model_(dict),
+    restraintsStarted_(false),
     momentsValid_(false),
     deltaT_(0),
     state_(model_.nDoF(), dict),
@@ -486,12 +474,12 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
 
         // The restraints' own states (a lumpedMassLine's nodes)
         const dictionary* rs = stateDict.findDict("restraintStates");
-        forAll(restraints_, ri)
+        forAll(stateful_, si)
         {
-            const word& name = restraints_[ri].name();
+            const word& name = stateful_[si].name();
             if (rs && rs->found(name))
             {
-                restraints_[ri].readState(rs->subDict(name));
+                stateful_[si].readState(rs->subDict(name));
             }
         }
     }
@@ -517,17 +505,13 @@ Foam::RBD::rigidBodyMotion::workspace() const
 
 void Foam::RBD::rigidBodyMotion::commitRestraints()
 {
-    bool stateful = false;
-    forAll(restraints_, ri)
-    {
-        stateful = stateful || restraints_[ri].stateful();
-    }
-    if (stateful)
+    if (stateful_.size())
     {
         const rigidBodyModelWorkspace& ws = workspace();
-        forAll(restraints_, ri)
+        startRestraints(state_, ws);
+        forAll(stateful_, si)
         {
-            restraints_[ri].commit(state_, ws);
+            stateful_[si].commit(state_, ws);
         }
     }
     restraintsCommitted_ = true;
@@ -597,7 +581,7 @@ void Foam::RBD::rigidBodyMotion::solve
 }
 
 
-const Foam::List<Foam::RBD::rateConstraint>&
+const Foam::UPtrList<Foam::RBD::prescription>&
 Foam::RBD::rigidBodyMotion::prescriptions()
 {
     if (!momentsValid_ && prescribing_.size())
@@ -605,7 +589,7 @@ Foam::RBD::rigidBodyMotion::prescriptions()
         evaluate(state_, ws_.qDdotScratch);
         momentsValid_ = true;
     }
-    return prescriptions_;
+    return prescribing_;
 }
 
 
@@ -615,15 +599,15 @@ void Foam::RBD::rigidBodyMotion::restraintForces
     Field<spatialVector>& fx
 )
 {
-    // The motors' moments on their bodies and the reactions
-    for (const rateConstraint& c : prescriptions())
+    // The motors' forces (a moment on its body and the reaction)
+    const UPtrList<prescription>& P = prescriptions();
+    forAll(P, s)
     {
-        const vector M(c.moment*c.axis);
-        fx[c.bodyID] += spatialVector(M, Zero);
-        fx[c.parentID] -= spatialVector(M, Zero);
+        P[s].addMotorForce(tau, fx);
     }
 
     const rigidBodyModelWorkspace& ws = workspace();
+    startRestraints(state_, ws);
 
     forAll(restraints_, ri)
     {
@@ -684,17 +668,17 @@ void Foam::RBD::rigidBodyMotion::write(Ostream& os) const
 void Foam::RBD::rigidBodyMotion::writeRestraintStates(Ostream& os) const
 {
     bool any = false;
-    forAll(restraints_, ri)
+    forAll(stateful_, si)
     {
         OStringStream entries;
-        if (restraints_[ri].writeState(entries))
+        if (stateful_[si].writeState(entries))
         {
             if (!any)
             {
                 os.beginBlock("restraintStates");
                 any = true;
             }
-            os.beginBlock(restraints_[ri].name());
+            os.beginBlock(stateful_[si].name());
             os.writeQuoted(entries.str(), false);
             os.endBlock();
         }

@@ -157,7 +157,7 @@ Foam::RBD::restraints::catenaryLine::catenaryLine
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    statefulRestraint(name, dict, model),
     anchor_(Zero),
     refAttachmentPt_(Zero),
     hasSeabed_(false),
@@ -168,7 +168,6 @@ Foam::RBD::restraints::catenaryLine::catenaryLine
     fairlead_(Zero),
     across_(1, 0, 0),
     up_(0, 0, 1),
-    hasCommitted_(false),
     committed_(line_)
 {
     read(dict);
@@ -197,19 +196,20 @@ void Foam::RBD::restraints::catenaryLine::restrain
 {
     fairlead_ = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
     addForce(fx, fairlead_, solve(line_, fairlead_, across_));
-
-    // The first evaluation makes the initial committed state
-    if (!hasCommitted_)
-    {
-        commitLatest();
-    }
 }
 
 
-void Foam::RBD::restraints::catenaryLine::commitLatest() const
+void Foam::RBD::restraints::catenaryLine::start
+(
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+)
 {
+    // From the line's own start, as its first trial solves it
+    const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
     committed_ = line_;
-    hasCommitted_ = true;
+    vector across(across_);
+    solve(committed_, p, across);
 }
 
 
@@ -224,13 +224,12 @@ void Foam::RBD::restraints::catenaryLine::commit
     const vector p(model_.globalPoint(bodyID_, refAttachmentPt_, ws));
     if (p == fairlead_)
     {
-        commitLatest();
+        committed_ = line_;
         return;
     }
     committed_ = line_;
     vector across(across_);
     solve(committed_, p, across);
-    hasCommitted_ = true;
 }
 
 

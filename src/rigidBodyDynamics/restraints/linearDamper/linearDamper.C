@@ -84,7 +84,7 @@ void Foam::RBD::restraints::linearDamper::restrain
     );
     const vector F(-coeff_*(pm.v - am.v));
     addForce(fx, pm.x, F);
-    fx[anchorMasterID_] += spatialVector(pm.x ^ -F, -F);
+    addReaction(fx, anchorMasterID_, pm.x, F);
 }
 
 

@@ -125,7 +125,7 @@ Foam::RBD::restraints::linearJointSpring::linearJointSpring
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    statefulRestraint(name, dict, model),
     dofs_(model.bodyDoFs(masterID_)),
     committed_(false),
     q0_(dofs_.size(), Zero),

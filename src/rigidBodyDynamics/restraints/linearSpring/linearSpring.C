@@ -96,7 +96,7 @@ void Foam::RBD::restraints::linearSpring::restrainBetween
 
     const vector F(force(r, L, pm.v - am.v));
     addForce(fx, pm.x, F);
-    fx[anchorMasterID_] += spatialVector(am.x ^ -F, -F);
+    addReaction(fx, anchorMasterID_, am.x, F);
 }
 
 

@@ -79,29 +79,13 @@ Foam::vector Foam::RBD::restraints::lumpedMassLine::fairlead
 }
 
 
-Foam::RBD::lumpedLine& Foam::RBD::restraints::lumpedMassLine::line
-(
-    const scalar t,
-    const vector& p,
-    const rigidBodyModelWorkspace& ws
-) const
+Foam::RBD::lumpedLine& Foam::RBD::restraints::lumpedMassLine::line() const
 {
     if (!line_)
     {
-        lumpedLine::properties lp(props_);
-        lp.g = model_.g();
-        line_.reset
-        (
-            new lumpedLine
-            (
-                lp, anchor_, p, t,
-                model_.v(bodyID_, refAttachmentPt_, ws).l()
-            )
-        );
-        if (pendingState_.size())
-        {
-            line_->readState(pendingState_);
-        }
+        FatalErrorInFunction
+            << "lumpedMassLine " << name_ << ": its line is evaluated before"
+            << " start() made it" << abort(FatalError);
     }
     return *line_;
 }
@@ -116,7 +100,7 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    statefulRestraint(name, dict, model),
     anchor_(Zero),
     refAttachmentPt_(Zero),
     props_(),
@@ -133,7 +117,7 @@ Foam::RBD::restraints::lumpedMassLine::lumpedMassLine
     const lumpedMassLine& l
 )
 :
-    restraint(l),
+    statefulRestraint(l),
     anchor_(l.anchor_),
     refAttachmentPt_(l.refAttachmentPt_),
     props_(l.props_),
@@ -156,9 +140,37 @@ void Foam::RBD::restraints::lumpedMassLine::restrain
 ) const
 {
     const vector p(fairlead(ws));
-    lumpedLine& l = line(state.t(), p, ws);
+    lumpedLine& l = line();
     l.advance(state.t(), p);
     addForce(fx, p, l.force());
+}
+
+
+void Foam::RBD::restraints::lumpedMassLine::start
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    if (line_)
+    {
+        return;
+    }
+
+    lumpedLine::properties lp(props_);
+    lp.g = model_.g();
+    line_.reset
+    (
+        new lumpedLine
+        (
+            lp, anchor_, fairlead(ws), state.t(),
+            model_.v(bodyID_, refAttachmentPt_, ws).l()
+        )
+    );
+    if (pendingState_.size())
+    {
+        line_->readState(pendingState_);
+    }
 }
 
 
@@ -169,7 +181,7 @@ void Foam::RBD::restraints::lumpedMassLine::commit
 )
 {
     const vector p(fairlead(ws));
-    lumpedLine& l = line(state.t(), p, ws);
+    lumpedLine& l = line();
     l.advance(state.t(), p);
     l.commit();
     committedTension_ = l.tension(props_.N - 1);

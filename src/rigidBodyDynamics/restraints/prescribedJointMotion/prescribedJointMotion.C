@@ -52,9 +52,9 @@ Foam::RBD::restraints::prescribedJointMotion::prescribedJointMotion
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    prescription(name, dict, model),
     dof_(-1),
-    jointBodyID_(-1)
+    positionNow_(0)
 {
     read(dict);
 }
@@ -65,10 +65,10 @@ Foam::RBD::restraints::prescribedJointMotion::prescribedJointMotion
     const prescribedJointMotion& pm
 )
 :
-    restraint(pm),
+    prescription(pm),
     dof_(pm.dof_),
-    jointBodyID_(pm.jointBodyID_),
-    position_(pm.position_->clone().ptr())
+    position_(pm.position_->clone().ptr()),
+    positionNow_(pm.positionNow_)
 {}
 
 
@@ -77,9 +77,8 @@ Foam::RBD::restraints::prescribedJointMotion::prescribedJointMotion
 void Foam::RBD::restraints::prescribedJointMotion::prescribe
 (
     const rigidBodyModelState& state,
-    const scalar deltaT,
-    rateConstraint& c
-) const
+    const scalar deltaT
+)
 {
     const scalar t = state.t();
     const Function1<scalar>& f = position_();
@@ -89,15 +88,44 @@ void Foam::RBD::restraints::prescribedJointMotion::prescribe
     const scalar span = deltaT > 0 ? deltaT : 1e-3*max(mag(t), 1);
     const scalar hv = 1e-3*span, ha = 1e-2*span;
 
-    c.bodyID = jointBodyID_;
-    c.parentID = model_.lambda()[jointBodyID_];
-    c.axis = Zero;
-    c.dof = dof_;
-    c.position = f.value(t);
-    c.rate = (f.value(t + hv) - f.value(t - hv))/(2*hv);
-    c.acceleration =
-        (f.value(t + ha) - 2*c.position + f.value(t - ha))/sqr(ha);
-    c.horizon = deltaT > 0 ? deltaT : VGREAT;
+    // Position and rate are met at the end of each solve only
+    // (rigidBodyModel::constrainState): no correction within it
+    positionNow_ = f.value(t);
+    rate = (f.value(t + hv) - f.value(t - hv))/(2*hv);
+    acceleration =
+        (f.value(t + ha) - 2*positionNow_ + f.value(t - ha))/sqr(ha);
+    rateGain = 0;
+}
+
+
+void Foam::RBD::restraints::prescribedJointMotion::addMotorColumns
+(
+    tableRow& row
+) const
+{
+    row.add(name_ + ".force", force);
+}
+
+
+void Foam::RBD::restraints::prescribedJointMotion::writeStatus
+(
+    const rigidBodyModelState& state,
+    const spatialVector&
+) const
+{
+    Info<< "    Prescribed motion " << name_ << ": q "
+        << state.q()[dof_] << " (prescribed " << positionNow_ << "), qDot "
+        << state.qDot()[dof_] << " (prescribed " << rate
+        << "), driving force " << force << endl;
+}
+
+
+void Foam::RBD::restraints::prescribedJointMotion::writeWhat
+(
+    Ostream& os
+) const
+{
+    os  << "the joint of body " << model_.name(bodyID_);
 }
 
 
@@ -131,16 +159,11 @@ bool Foam::RBD::restraints::prescribedJointMotion::read
     }
     dof_ = dofs[0];
 
-    // The body whose own joint holds it (a composite's jointBody, or the
-    // body itself)
-    for (label i = 1; i < model_.nBodies(); ++i)
-    {
-        const joint& J = model_.joints()[i];
-        if (J.nDoF() && dof_ >= J.qIndex() && dof_ < J.qIndex() + J.nDoF())
-        {
-            jointBodyID_ = i;
-        }
-    }
+    // Its row: the degree of freedom's unit row, the motor's too
+    row = Zero;
+    motor = Zero;
+    row[dof_] = 1;
+    motor[dof_] = 1;
 
     position_ = readFunction1<scalar>(dict, "position");
     return true;

@@ -50,7 +50,7 @@ Foam::RBD::restraints::prescribedRotation::prescribedRotation
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    prescription(name, dict, model),
     ancestorID_(model.jointAncestor(masterID_))
 {
     read(dict);
@@ -62,55 +62,109 @@ Foam::RBD::restraints::prescribedRotation::prescribedRotation
     const prescribedRotation& pr
 )
 :
-    restraint(pr),
+    prescription(pr),
     axis_(pr.axis_),
     omega_(pr.omega_->clone().ptr()),
     ancestorID_(pr.ancestorID_)
 {}
 
 
-void Foam::RBD::restraints::prescribedRotation::restrain
-(
-    scalarField&,
-    Field<spatialVector>&,
-    const rigidBodyModelState&,
-    const rigidBodyModelWorkspace&
-) const
-{
-    // No force of its own: the model's forward dynamics applies the moment
-    // the prescription takes (prescribe())
-}
-
-
 void Foam::RBD::restraints::prescribedRotation::prescribe
 (
     const rigidBodyModelState& state,
-    const scalar deltaT,
-    rateConstraint& c
-) const
+    const scalar deltaT
+)
 {
     const scalar t = state.t();
 
-    c.bodyID = masterID_;
-    c.parentID = ancestorID_;
-    c.axis = axis_;
-    c.rate = axis_ & omega_->value(t);
+    rate = axis_ & omega_->value(t);
 
     if (deltaT > 0)
     {
         // The rate of one step ahead, reached by the end of the step
-        c.acceleration =
-            ((axis_ & omega_->value(t + deltaT)) - c.rate)/deltaT;
-        c.horizon = deltaT;
+        acceleration = ((axis_ & omega_->value(t + deltaT)) - rate)/deltaT;
+        rateGain = 1/deltaT;
     }
     else
     {
         // No step to correct within: the prescription's own rate of change
         const scalar h = 1e-6*max(mag(t), 1);
-        c.acceleration =
+        acceleration =
             (axis_ & (omega_->value(t + h) - omega_->value(t - h)))/(2*h);
-        c.horizon = VGREAT;
+        rateGain = 0;
     }
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::linearise
+(
+    const rigidBodyModel& model,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    model.angularRow(masterID_, ancestorID_, axis_, ws, *this);
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::addMotorForce
+(
+    scalarField&,
+    Field<spatialVector>& fx
+) const
+{
+    const vector M(force*axis_);
+    fx[masterID_] += spatialVector(M, Zero);
+    fx[ancestorID_] -= spatialVector(M, Zero);
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::writeStatus
+(
+    const rigidBodyModelState&,
+    const spatialVector& v
+) const
+{
+    Info<< "    Prescribed rotation " << name_ << ": omega "
+        << (axis_ & v.w()) << " rad/s about " << axis_
+        << " (prescribed " << rate << "), motor moment "
+        << force << " N m" << endl;
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::checkMotor
+(
+    const rigidBodyModelWorkspace& ws,
+    const scalar response,
+    const dictionary& dict
+) const
+{
+    // The motor's response, against that of the body on its own
+    const rigidBodyInertia& body = model_.bodies()[masterID_];
+    const vector e(model_.X0(masterID_, ws).E() & axis_);
+    const scalar Ia = e & (body.Ic() & e);
+
+    if (!(response > 1e-9/max(Ia, VSMALL)))
+    {
+        const joint& J = model_.joints()[masterID_];
+        FatalIOErrorInFunction(dict)
+            << "Restraint " << name_ << " (" << type()
+            << ") prescribes the rotation of body "
+            << model_.name(bodyID_) << " about " << axis_
+            << ", but its joint (" << J.type() << ") does not turn it"
+            << " about that axis relative to "
+            << model_.bodies()[ancestorID_].name() << "." << nl
+            << "Give the body a joint that does (for an axis along a"
+            << " coordinate axis, e.g. Rx, Ry or Rz; for any axis, Ra"
+            << " with that axis, or Rs), or prescribe another axis."
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+void Foam::RBD::restraints::prescribedRotation::writeWhat(Ostream& os) const
+{
+    os  << "the rotation of body " << model_.name(bodyID_) << " about "
+        << axis_;
 }
 
 

@@ -104,19 +104,6 @@ Foam::label Foam::RBD::restraint::readAnchorBody(const dictionary& dict) const
 }
 
 
-void Foam::RBD::restraint::prescribe
-(
-    const rigidBodyModelState&,
-    const scalar,
-    rateConstraint&
-) const
-{
-    FatalErrorInFunction
-        << "Restraint " << name_ << " of type " << type()
-        << " prescribes no motion" << abort(FatalError);
-}
-
-
 Foam::wordList Foam::RBD::restraint::tableColumns() const
 {
     tableRow row;
