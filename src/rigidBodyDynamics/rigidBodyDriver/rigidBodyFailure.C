@@ -143,7 +143,9 @@ void Foam::RBD::rigidBodyFailure::restraintCauses
     // Restraints faster than the step resolves
     for (const restraint& r : motion.restraints())
     {
-        const scalar T = r.naturalPeriod();
+        restraintReport rr;
+        r.describe(ws, rr);
+        const scalar T = rr.period("natural");
         if (T > 0 && T < 10*deltaT)
         {
             causes

@@ -239,9 +239,18 @@ void Foam::RBD::restraints::catenaryLine::describe
     restraintReport& report
 ) const
 {
-    report.anchor = anchor_;
+    // Its latest solve (the warm start) solved again for the fairlead
+    elasticCatenary c(line_);
+    const vector up(this->up());
+    report.line = true;
     report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
-    report.line.reset(new elasticCatenary(line_));
+    report.force = c.fairleadForce(anchor_, report.fairlead, up);
+    report.tension = c.tension();
+    report.H = c.H();
+    report.V = c.V();
+    report.groundedLength = c.groundedLength();
+    report.forceGradient =
+        c.fairleadForceGradient(anchor_, report.fairlead, up);
 }
 
 

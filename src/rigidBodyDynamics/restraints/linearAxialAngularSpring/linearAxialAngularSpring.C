@@ -80,11 +80,23 @@ void Foam::RBD::restraints::linearAxialAngularSpring::restrain
 }
 
 
-Foam::scalar Foam::RBD::restraints::linearAxialAngularSpring::naturalPeriod() const
+void Foam::RBD::restraints::linearAxialAngularSpring::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
 {
     using constant::mathematical::twoPi;
     const scalar I = axis_ & (model_.bodies()[masterID_].Ic() & axis_);
-    return stiffness_ > 0 ? twoPi*sqrt(I/stiffness_) : 0;
+    if (stiffness_ > 0)
+    {
+        report.addPeriod
+        (
+            "natural",
+            "natural period",
+            twoPi*sqrt(I/stiffness_)
+        );
+    }
 }
 
 

@@ -162,33 +162,6 @@ Foam::RBD::restraints::linearJointSpring::linearJointSpring
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar
-Foam::RBD::restraints::linearJointSpring::naturalPeriod() const
-{
-    const joint& J = model_.joints()[masterID_];
-    if (dofs_.size() != 1 || J.nDoF() != 1 || !(stiffness_[0] > 0))
-    {
-        return 0;
-    }
-
-    joint::XSvc xsvc;
-    const scalarField zero(model_.nDoF(), Zero);
-    J.jcalc(xsvc, zero, zero);
-    const spatialVector& S = xsvc.S[0];
-    const rigidBodyInertia& I = model_.bodies()[masterID_];
-
-    // A rotation's inertia about its axis through the body's origin
-    scalar inertia = I.m();
-    if (mag(S.w()) > SMALL)
-    {
-        const vector w(S.w()/mag(S.w()));
-        inertia = (w & (I.Ic() & w)) + I.m()*magSqr(w ^ I.c());
-    }
-
-    return constant::mathematical::twoPi*sqrt(inertia/stiffness_[0]);
-}
-
-
 void Foam::RBD::restraints::linearJointSpring::restrain
 (
     scalarField& tau,
@@ -280,6 +253,33 @@ void Foam::RBD::restraints::linearJointSpring::describe
 {
     report.otherBodyID = model_.jointAncestor(masterID_);
     report.onJoint = true;
+
+    const joint& J = model_.joints()[masterID_];
+    if (dofs_.size() != 1 || J.nDoF() != 1 || !(stiffness_[0] > 0))
+    {
+        return;
+    }
+
+    joint::XSvc xsvc;
+    const scalarField zero(model_.nDoF(), Zero);
+    J.jcalc(xsvc, zero, zero);
+    const spatialVector& S = xsvc.S[0];
+    const rigidBodyInertia& I = model_.bodies()[masterID_];
+
+    // A rotation's inertia about its axis through the body's origin
+    scalar inertia = I.m();
+    if (mag(S.w()) > SMALL)
+    {
+        const vector w(S.w()/mag(S.w()));
+        inertia = (w & (I.Ic() & w)) + I.m()*magSqr(w ^ I.c());
+    }
+
+    report.addPeriod
+    (
+        "natural",
+        "natural period",
+        constant::mathematical::twoPi*sqrt(inertia/stiffness_[0])
+    );
 }
 
 

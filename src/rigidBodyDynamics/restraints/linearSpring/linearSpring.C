@@ -135,21 +135,24 @@ void Foam::RBD::restraints::linearSpring::restrain
 }
 
 
-Foam::scalar Foam::RBD::restraints::linearSpring::naturalPeriod() const
-{
-    using constant::mathematical::twoPi;
-    const scalar m = model_.bodies()[masterID_].m();
-    return stiffness_ > 0 ? twoPi*sqrt(m/stiffness_) : 0;
-}
-
-
 void Foam::RBD::restraints::linearSpring::describe
 (
     const rigidBodyModelWorkspace&,
     restraintReport& report
 ) const
 {
+    using constant::mathematical::twoPi;
     report.otherBodyID = anchorBodyID_;
+    const scalar m = model_.bodies()[masterID_].m();
+    if (stiffness_ > 0)
+    {
+        report.addPeriod
+        (
+            "natural",
+            "natural period",
+            twoPi*sqrt(m/stiffness_)
+        );
+    }
 }
 
 

@@ -23,6 +23,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lumpedMassLine.H"
+#include "elasticCatenary.H"
 #include "rigidBodyModel.H"
 #include "rigidBodyEntries.H"
 #include "vtkPolyline.H"
@@ -207,18 +208,41 @@ void Foam::RBD::restraints::lumpedMassLine::describe
     cp.grounded =
         p.hasSeabed && mag((anchor_ & up) - p.seabed) <= 1e-6*p.L;
 
-    report.anchor = anchor_;
     report.fairlead = model_.globalPoint(bodyID_, refAttachmentPt_, ws);
-    report.line.reset(new elasticCatenary(cp));
+
+    // Its stiffness: the catenary's at the fairlead, up against the
+    // model's gravity
+    {
+        const vector& g = model_.g();
+        const vector upModel(mag(g) > VSMALL ? -g/mag(g) : vector(0, 0, 1));
+        elasticCatenary c(cp);
+        report.line = true;
+        report.force = c.fairleadForce(anchor_, report.fairlead, upModel);
+        report.tension = c.tension();
+        report.H = c.H();
+        report.V = c.V();
+        report.groundedLength = c.groundedLength();
+        report.forceGradient =
+            c.fairleadForceGradient(anchor_, report.fairlead, upModel);
+    }
 
     // The transverse period at the catenary's tension there
     elasticCatenary solved(cp);
-    solved.fairleadForce(report.anchor, report.fairlead, up);
+    solved.fairleadForce(anchor_, report.fairlead, up);
     const scalar A = 0.25*pi*sqr(p.d);
     const scalar T0 = solved.tension();
-    report.axialPeriod = 2*p.L/sqrt(p.EA/p.mu);
-    report.transversePeriod =
-        T0 > 0 ? 2*p.L/sqrt(T0/(p.mu + p.rho*A*p.Can)) : GREAT;
+    report.addPeriod
+    (
+        "axial",
+        "first axial period 2 L/sqrt(EA/mu)",
+        2*p.L/sqrt(p.EA/p.mu)
+    );
+    report.addPeriod
+    (
+        "transverse",
+        "first transverse period 2 L/sqrt(T/(mu + added))",
+        T0 > 0 ? 2*p.L/sqrt(T0/(p.mu + p.rho*A*p.Can)) : GREAT
+    );
     report.maxSubStep = line_ ? line_->maxSubStep() : 0;
 }
 

@@ -86,9 +86,13 @@ void Foam::RBD::restraints::softWall::restrain
 }
 
 
-Foam::scalar Foam::RBD::restraints::softWall::naturalPeriod() const
+void Foam::RBD::restraints::softWall::describe
+(
+    const rigidBodyModelWorkspace&,
+    restraintReport& report
+) const
 {
-    return 2*C_;
+    report.addPeriod("natural", "natural period", 2*C_);
 }
 
 
