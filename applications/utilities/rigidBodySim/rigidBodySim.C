@@ -219,6 +219,40 @@ void printStatus(const Time& runTime, RBD::rigidBodyDriver& driver)
 }
 
 
+//- One time step, the time already moved on: its one solve (the step's
+//  final), the model report's tracking, the status where due and, at a
+//  write time, the time's own record and the bodies' state.  Returns the
+//  time integrator's solves
+label takeStep
+(
+    Time& runTime,
+    RBD::rigidBodyDriver& driver,
+    rigidBodySimReport* modelReport,
+    const bool everyStep,
+    const Field<spatialVector>& fx
+)
+{
+    driver.solve(fx, true);
+    if (modelReport)
+    {
+        modelReport->track();
+    }
+
+    if (everyStep || (driver.report() && runTime.writeTime()))
+    {
+        printStatus(runTime, driver);
+    }
+
+    if (runTime.writeTime())
+    {
+        runTime.write();
+        driver.writeState();
+    }
+
+    return driver.step().nSolves();
+}
+
+
 //- With -report, the model's report, its model printed before the first
 //  step; else none
 autoPtr<rigidBodySimReport> newModelReport
@@ -385,28 +419,11 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         ++runTime;
-
-        // One solve a step: its final
-        driver.solve(noExternalForces, true);
         ++nSteps;
-        if (modelReport.valid())
-        {
-            modelReport->track();
-        }
-        nSolves += driver.step().nSolves();
-
-        if (everyStep || (driver.report() && runTime.writeTime()))
-        {
-            printStatus(runTime, driver);
-        }
-
-        if (runTime.writeTime())
-        {
-            // The time's own record (uniform/time), as a solver writes it,
-            // and the bodies' state
-            runTime.write();
-            driver.writeState();
-        }
+        nSolves += takeStep
+        (
+            runTime, driver, modelReport.get(), everyStep, noExternalForces
+        );
 
         if (!everyStep)
         {
