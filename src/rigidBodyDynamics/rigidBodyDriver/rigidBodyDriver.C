@@ -125,13 +125,7 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
         motion_.model(),
         externalForces
     ),
-    failure_
-    (
-        runTime,
-        name,
-        runTime.globalPath()/"postProcessing"/name/runTime.timeName(),
-        coeffs
-    ),
+    failure_(runTime, name, tables_.dir(), coeffs),
     tau_(motion_.model().nDoF(), Zero),
     fx_(motion_.model().nBodies(), Zero)
 {
