@@ -27,7 +27,71 @@ License
 #include "spatialTransform.H"
 #include "IOstream.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Keywords  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+    // The sixDoFRigidBodyMotion keywords, in the library's keyword table
+    // (keywordTable.H), each list once: of the coefficients, those mapped,
+    // those copied as they are, those kept for the mesh motion (at the top
+    // level and in the body's entry), those read and not used, and the
+    // dynamicMeshDict's own (the coefficients at its top level); each
+    // constraint's, each restraint's (sixDoFConverterRestraints.C) and each
+    // solver's
+    addRigidBodyKeywords
+    (
+        sixDoF, mapped,
+        "mass", "momentOfInertia", "centreOfMass", "initialCentreOfMass",
+        "orientation", "initialOrientation", "centreOfRotation", "velocity",
+        "angularMomentum", "solver", "restraints", "constraints"
+    );
+    addRigidBodyKeywords
+    (
+        sixDoF, copied,
+        "accelerationRelaxation", "accelerationDamping", "report", "g"
+    );
+    addRigidBodyKeywords(sixDoF, kept, "rho", "rhoInf", "test");
+    addRigidBodyKeywords
+    (
+        sixDoF, body, "patches", "innerDistance", "outerDistance"
+    );
+    addRigidBodyKeywords
+    (
+        sixDoF, notUsed,
+        "CofGvelocity", "cellZone", "cellSet", "acceleration", "torque"
+    );
+    addRigidBodyKeywords
+    (
+        sixDoF, meshDict,
+        "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolver",
+        "motionSolverLibs", "updateControl", "updateInterval",
+        "sixDoFRigidBodyMotionCoeffs", "rigidBodyMotionCoeffs"
+    );
+
+    addRigidBodyCommonKeywords
+    (
+        sixDoFConstraint, Constraint, "sixDoFRigidBodyMotionConstraint"
+    );
+    addRigidBodyKeywords(sixDoFConstraint, axis, "axis");
+    addRigidBodyKeywords
+    (
+        sixDoFConstraint, line, "direction", "centreOfRotation"
+    );
+    addRigidBodyKeywords(sixDoFConstraint, plane, "normal", "centreOfRotation");
+    addRigidBodyKeywords(sixDoFConstraint, point, "centreOfRotation");
+    addRigidBodyKeywords
+    (
+        sixDoFConstraint, orientation, "sixDoFRigidBodyMotionConstraint"
+    );
+
+    addRigidBodyCommonKeywords(sixDoFSolver, Solver, "type");
+    addRigidBodyKeywords(sixDoFSolver, Newmark, "gamma", "beta");
+    addRigidBodyKeywords(sixDoFSolver, CrankNicolson, "aoc", "voc");
+    addRigidBodyKeywords(sixDoFSolver, symplectic, "type");
+}
+}
 
 const Foam::word Foam::RBD::sixDoFConverter::bodyName("body");
 
@@ -38,42 +102,11 @@ namespace
 {
 using namespace Foam;
 
-// The keywords of the coefficients, each list once: those mapped, those
-// kept for the mesh motion (at the top level and in the body's entry), those
-// read and not used, and the dynamicMeshDict's own (with the coefficients
-// at its top level)
-const wordList mappedKeywords
-({
-    "mass", "momentOfInertia", "centreOfMass", "initialCentreOfMass",
-    "orientation", "initialOrientation", "centreOfRotation", "velocity",
-    "angularMomentum", "solver", "restraints", "constraints"
-});
-const wordList copiedKeywords
-({
-    "accelerationRelaxation", "accelerationDamping", "report", "g"
-});
-const wordList keptKeywords({"rho", "rhoInf", "test"});
-const wordList bodyKeywords({"patches", "innerDistance", "outerDistance"});
-const wordList notUsedKeywords
-({
-    "CofGvelocity", "cellZone", "cellSet", "acceleration", "torque"
-});
-const wordList meshDictKeywords
-({
-    "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolver", "motionSolverLibs",
-    "updateControl", "updateInterval"
-});
-
-// Each constraint type's keywords, and the key naming the type
-const word constraintKey("sixDoFRigidBodyMotionConstraint");
-const HashTable<wordList> constraintKeywords
-({
-    {"axis", {"axis"}},
-    {"line", {"direction", "centreOfRotation"}},
-    {"plane", {"normal", "centreOfRotation"}},
-    {"point", {"centreOfRotation"}},
-    {"orientation", {}}
-});
+// The keywords that the converter registers as type of family sixDoF
+wordList sixDoFKeywords(const char* type)
+{
+    return RBD::keywordTable::keywords("sixDoF", type);
+}
 
 // The precision of the entries made: they are written to text and read
 // back by dictionary::add, and must come back as the same numbers
@@ -150,6 +183,22 @@ void inPlane(const vector& n, vector& e1, vector& e2)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::RBD::sixDoFConverter::unknownType
+(
+    const dictionary& dict,
+    const char* what,
+    const word& type,
+    const word& family
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "Unknown " << what << " type " << type << nl << nl
+        << "Valid " << what << " types :" << nl
+        << keywordTable::types(family) << nl
+        << exit(FatalIOError);
+}
+
+
 void Foam::RBD::sixDoFConverter::readBody()
 {
     mass_ = readPositive(dict_, "mass");
@@ -204,15 +253,14 @@ void Foam::RBD::sixDoFConverter::readConstraints()
             continue;
         }
         const dictionary& c = e.dict();
-        const word type(c.get<word>(constraintKey));
+        const word type(c.get<word>("sixDoFRigidBodyMotionConstraint"));
 
-        if (!constraintKeywords.found(type))
+        const word family("sixDoFConstraint");
+        if (!keywordTable::found(family, type))
         {
-            FatalIOErrorInLookup(c, "constraint", type, constraintKeywords)
-                << exit(FatalIOError);
+            unknownType(c, "constraint", type, family);
         }
-        wordList read(constraintKeywords[type]);
-        read.append(constraintKey);
+        const wordList read(keywordTable::keywords(family, type));
         checkEntries(c, read, read, "constraint " + e.keyword());
 
         if (type == "axis")
@@ -354,7 +402,7 @@ Foam::dictionary Foam::RBD::sixDoFConverter::body
     b.add("inertia", symm(Q0_ & J & Q0_.T()));
     b.add("transform", spatialTransform(tensor::I, CofR_));
     b.add("joint", jointDict);
-    for (const word& key : bodyKeywords)
+    for (const word& key : sixDoFKeywords("body"))
     {
         if (dict_.found(key))
         {
@@ -426,18 +474,13 @@ Foam::dictionary Foam::RBD::sixDoFConverter::solver() const
     const dictionary& s = dict_.subDict("solver");
     const word type(s.get<word>("type"));
 
-    const HashTable<wordList> solverKeywords
-    ({
-        {"Newmark", {"type", "gamma", "beta"}},
-        {"CrankNicolson", {"type", "aoc", "voc"}},
-        {"symplectic", {"type"}}
-    });
-    if (!solverKeywords.found(type))
+    const word family("sixDoFSolver");
+    if (!keywordTable::found(family, type))
     {
-        FatalIOErrorInLookup(s, "sixDoF solver", type, solverKeywords)
-            << exit(FatalIOError);
+        unknownType(s, "sixDoF solver", type, family);
     }
-    checkEntries(s, solverKeywords[type], solverKeywords[type], "solver");
+    const wordList read(keywordTable::keywords(family, type));
+    checkEntries(s, read, read, "solver");
 
     dictionary d(s);
     if (type == "Newmark")
@@ -460,9 +503,9 @@ Foam::dictionary Foam::RBD::sixDoFConverter::solver() const
 
 void Foam::RBD::sixDoFConverter::copyEntries()
 {
-    for (const wordList* keys : {&copiedKeywords, &keptKeywords})
+    for (const char* type : {"copied", "kept"})
     {
-        for (const word& key : *keys)
+        for (const word& key : sixDoFKeywords(type))
         {
             if (dict_.found(key))
             {
@@ -470,7 +513,7 @@ void Foam::RBD::sixDoFConverter::copyEntries()
             }
         }
     }
-    for (const word& key : notUsedKeywords)
+    for (const word& key : sixDoFKeywords("notUsed"))
     {
         if (dict_.found(key))
         {
@@ -529,13 +572,7 @@ void Foam::RBD::sixDoFConverter::checkInitialState() const
 
 void Foam::RBD::sixDoFConverter::checkUnread() const
 {
-    wordList read(mappedKeywords);
-    read.append(copiedKeywords);
-    read.append(keptKeywords);
-    read.append(bodyKeywords);
-    read.append(notUsedKeywords);
-    read.append(meshDictKeywords);
-    read.append("sixDoFRigidBodyMotionCoeffs");
+    const wordList read(keywordTable::keywords("sixDoF"));
     checkEntries(dict_, read, read, "the sixDoFRigidBodyMotion coefficients");
 
     for (const char* key : {"constraints", "restraints"})

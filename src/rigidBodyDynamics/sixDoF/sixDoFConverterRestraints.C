@@ -25,29 +25,39 @@ License
 #include "rigidBodyModel.H"
 #include "keywordTable.H"
 
+// * * * * * * * * * * * * * * * * Keywords  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+    // Each mapped sixDoF restraint's keywords (keywordTable.H)
+    addRigidBodyCommonKeywords
+    (
+        sixDoFRestraint, Restraint, "sixDoFRigidBodyMotionRestraint"
+    );
+    addRigidBodyKeywords
+    (
+        sixDoFRestraint, linearSpring,
+        "anchor", "refAttachmentPt", "stiffness", "damping", "restLength"
+    );
+    addRigidBodyKeywords(sixDoFRestraint, linearDamper, "coeff");
+    addRigidBodyKeywords(sixDoFRestraint, sphericalAngularDamper, "coeff");
+    addRigidBodyKeywords
+    (
+        sixDoFRestraint, linearAxialAngularSpring,
+        "axis", "stiffness", "damping", "referenceOrientation"
+    );
+}
+}
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
-using namespace Foam;
-
-// The key naming a restraint's type, each mapped type's keywords, and the
-// types of sixDoF that are not mapped yet
-const word restraintKey("sixDoFRigidBodyMotionRestraint");
-const HashTable<wordList> restraintKeywords
-({
-    {
-        "linearSpring",
-        {"anchor", "refAttachmentPt", "stiffness", "damping", "restLength"}
-    },
-    {"linearDamper", {"coeff"}},
-    {"sphericalAngularDamper", {"coeff"}},
-    {
-        "linearAxialAngularSpring",
-        {"axis", "stiffness", "damping", "referenceOrientation"}
-    }
-});
-const wordList notSupported
+// The sixDoF restraints not mapped yet
+const Foam::wordList notSupported
 ({
     "sphericalAngularSpring", "tabulatedAxialAngularSpring",
     "linearSpringDamper"
@@ -64,23 +74,22 @@ Foam::dictionary Foam::RBD::sixDoFConverter::restraint
     const dictionary& r
 ) const
 {
-    const word type(r.get<word>(restraintKey));
+    const word type(r.get<word>("sixDoFRigidBodyMotionRestraint"));
+    const word family("sixDoFRestraint");
 
     if (notSupported.found(type))
     {
         FatalIOErrorInFunction(r)
             << "Restraint " << name << ": sixDoFRigidBodyMotionRestraint "
             << type << " is not supported yet.  Supported: "
-            << restraintKeywords.sortedToc() << nl
+            << keywordTable::types(family) << nl
             << exit(FatalIOError);
     }
-    if (!restraintKeywords.found(type))
+    if (!keywordTable::found(family, type))
     {
-        FatalIOErrorInLookup(r, "restraint", type, restraintKeywords)
-            << exit(FatalIOError);
+        unknownType(r, "restraint", type, family);
     }
-    wordList read(restraintKeywords[type]);
-    read.append(restraintKey);
+    const wordList read(keywordTable::keywords(family, type));
     checkEntries(r, read, read, "restraint " + name);
 
     dictionary d;
