@@ -127,6 +127,28 @@ public:
     }
 };
 
+// A FatalIOError at dict if value, of its state entry key, is not initial
+// (which names it): a restart's state, not supported yet
+template<class Type>
+void checkInitial
+(
+    const dictionary& dict,
+    const word& key,
+    const Type& value,
+    const Type& initial,
+    const char* which
+)
+{
+    if (mag(value - initial) > 1e-12*max(mag(initial), 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << ' ' << value << " (the state's) is not "
+            << which << ' ' << initial << ": a state moved from the"
+            << " initial one, as a restart's, is not supported yet" << nl
+            << exit(FatalIOError);
+    }
+}
+
 // The joint along unit vector d: X (Px, Rx) along a global axis, else the
 // general type (Pa, Ra) with d as its axis
 dictionary axisJoint(const char prefix, const vector& d)
@@ -525,48 +547,32 @@ void Foam::RBD::sixDoFConverter::copyEntries()
 
 void Foam::RBD::sixDoFConverter::checkInitialState() const
 {
-    // sixDoF's state: centreOfRotation (default centreOfMass) and
-    // orientation; its initial ones: the constraints' centre of rotation
-    // and initialOrientation.  Apart, they are a restart's state
+    // sixDoF's state: centreOfRotation (default centreOfMass), orientation
+    // (default I) and centreOfMass (which it requires); its initial ones:
+    // the constraints' centre of rotation, initialOrientation and
+    // initialCentreOfMass (defaults orientation and centreOfMass).  Apart,
+    // they are a restart's state
     if (dict_.found("centreOfRotation"))
     {
-        const point c(dict_.get<point>("centreOfRotation"));
-        if (mag(c - CofR_) > 1e-12*max(mag(CofR_), 1))
-        {
-            FatalIOErrorInFunction(dict_.lookup("centreOfRotation"))
-                << "Entry centreOfRotation " << c << " is not the initial"
-                << " centre of rotation " << CofR_ << " (the last line,"
-                << " plane or point constraint's, else the centre of"
-                << " mass): a state moved from the initial one, as a"
-                << " restart's, is not supported yet" << nl
-                << exit(FatalIOError);
-        }
+        checkInitial
+        (
+            dict_, "centreOfRotation", dict_.get<point>("centreOfRotation"),
+            CofR_,
+            "the initial centre of rotation (the last line, plane or point"
+            " constraint's, else the centre of mass)"
+        );
     }
-    if (dict_.found("initialOrientation") && dict_.found("orientation"))
-    {
-        const tensor Q(dict_.get<tensor>("orientation"));
-        if (mag(Q - Q0_) > 1e-12)
-        {
-            FatalIOErrorInFunction(dict_.lookup("orientation"))
-                << "Entry orientation " << Q << " is not initialOrientation "
-                << Q0_ << ": a state turned from the initial one, as a"
-                << " restart's, is not supported yet" << nl
-                << exit(FatalIOError);
-        }
-    }
-    if (dict_.found("initialCentreOfMass") && dict_.found("centreOfMass"))
-    {
-        const point c(dict_.get<point>("centreOfMass"));
-        if (mag(c - CofM_) > 1e-12*max(mag(CofM_), 1))
-        {
-            FatalIOErrorInFunction(dict_.lookup("centreOfMass"))
-                << "Entry centreOfMass " << c << " is not"
-                << " initialCentreOfMass " << CofM_ << ": a state moved"
-                << " from the initial one, as a restart's, is not supported"
-                << " yet" << nl
-                << exit(FatalIOError);
-        }
-    }
+    checkInitial
+    (
+        dict_, "orientation",
+        dict_.getOrDefault<tensor>("orientation", tensor::I), Q0_,
+        "initialOrientation"
+    );
+    checkInitial
+    (
+        dict_, "centreOfMass", dict_.get<point>("centreOfMass"), CofM_,
+        "initialCentreOfMass"
+    );
 }
 
 
