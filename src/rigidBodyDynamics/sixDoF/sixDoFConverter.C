@@ -170,10 +170,23 @@ dictionary axisJoint(const char prefix, const vector& d)
     return j;
 }
 
-// Two orthonormal vectors in the plane of unit normal n: global axes if n
-// is along one
+// Two orthonormal vectors in the plane of unit normal n: the other two
+// global axes, in order, if n is along one
 void inPlane(const vector& n, vector& e1, vector& e2)
 {
+    for (direction a = 0; a < 3; ++a)
+    {
+        if (mag(n[a]) > 1 - 1e-12)
+        {
+            e1 = Zero;
+            e2 = Zero;
+            e1[a == 0 ? 1 : 0] = 1;
+            e2[a == 2 ? 1 : 2] = 1;
+            return;
+        }
+    }
+
+    // Else across n and the global axis least along it
     direction k = 0;
     for (direction i = 1; i < 3; ++i)
     {
@@ -181,17 +194,6 @@ void inPlane(const vector& n, vector& e1, vector& e2)
         {
             k = i;
         }
-    }
-    if (mag(mag(n[(k + 1) % 3]) - 1) < 1e-12
-     || mag(mag(n[(k + 2) % 3]) - 1) < 1e-12)
-    {
-        // n along a global axis: the other two, in order
-        const direction a = mag(n.x()) > 0.5 ? 0 : mag(n.y()) > 0.5 ? 1 : 2;
-        e1 = Zero;
-        e2 = Zero;
-        e1[a == 0 ? 1 : 0] = 1;
-        e2[a == 2 ? 1 : 2] = 1;
-        return;
     }
     vector ek(Zero);
     ek[k] = 1;
