@@ -564,12 +564,17 @@ void Foam::RBD::sixDoFConverter::checkInitialState() const
             " constraint's, else the centre of mass)"
         );
     }
-    checkInitial
-    (
-        dict_, "orientation",
-        dict_.getOrDefault<tensor>("orientation", tensor::I), Q0_,
-        "initialOrientation"
-    );
+    if (dict_.found("initialOrientation"))
+    {
+        // As given: Q0_ is the nearest rotation to it
+        checkInitial
+        (
+            dict_, "orientation",
+            dict_.getOrDefault<tensor>("orientation", tensor::I),
+            dict_.get<tensor>("initialOrientation"),
+            "initialOrientation"
+        );
+    }
     checkInitial
     (
         dict_, "centreOfMass", dict_.get<point>("centreOfMass"), CofM_,
