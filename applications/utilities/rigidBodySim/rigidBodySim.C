@@ -32,6 +32,10 @@ Description
     The coefficients come from the rigidBodyMotionCoeffs sub-dictionary of
     constant/dynamicMeshDict (so an interDyMFoam case runs unchanged, without
     its fluid), or else from the top level of constant/rigidBodyMotionDict.
+    A dynamicMeshDict whose motion solver is sixDoFRigidBodyMotion runs as
+    the rigid-body model it maps to (Foam::RBD::sixDoFConverter): one body
+    on a composite joint of the degrees of freedom its constraints leave
+    free; -report prints that model's rigidBodyMotionCoeffs.
     Gravity is their g entry, or else constant/g.  system/controlDict gives
     deltaT, endTime and the write controls.
 
@@ -73,6 +77,7 @@ Usage
 #include "Time.H"
 #include "rigidBodyDriver.H"
 #include "keywordTable.H"
+#include "sixDoFConverter.H"
 #include "rigidBodySimInput.H"
 #include "rigidBodySimControls.H"
 #include "rigidBodySimReport.H"
@@ -112,8 +117,9 @@ void addOptions()
     argList::addNote("");
     argList::addNote
     (
-        "Reads: the rigidBodyMotionCoeffs of constant/dynamicMeshDict, or"
-        " else constant/rigidBodyMotionDict; g from them or constant/g;"
+        "Reads: the rigidBodyMotionCoeffs of constant/dynamicMeshDict (or"
+        " its sixDoFRigidBodyMotion coefficients, as the model they map to),"
+        " or else constant/rigidBodyMotionDict; g from them or constant/g;"
         " deltaT, endTime and the write controls from system/controlDict;"
         " <time>/uniform/rigidBodyMotionState when started from a written"
         " time."
@@ -132,7 +138,9 @@ void addOptions()
     argList::addBoolOption
     (
         "report",
-        "also report the model: before the first step its bodies (parent,"
+        "also report the model (and, for a sixDoFRigidBodyMotion"
+        " dictionary, the rigidBodyMotionCoeffs it maps to): before the"
+        " first step its bodies (parent,"
         " joint, degrees of freedom, mass, centre of mass, inertia), total"
         " mass and restraints' natural periods against deltaT; after the"
         " last, each degree of freedom's range of motion (and which stayed"
@@ -388,7 +396,10 @@ int main(int argc, char *argv[])
 
     const bool everyStep = args.found("everyStep");
 
-    const dictionary coeffs(rigidBodySimCoeffs(runTime));
+    const dictionary coeffs
+    (
+        rigidBodySimCoeffs(runTime, args.found("report"))
+    );
     RBD::rigidBodyDriver driver(runTime, coeffs, "rigidBodySim", false);
     const word startTimeName(runTime.timeName());
     driver.tableEveryStep(everyStep);
