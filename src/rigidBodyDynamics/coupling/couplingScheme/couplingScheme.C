@@ -75,7 +75,8 @@ Foam::RBD::couplingScheme::couplingScheme
     damping_(readFactor(dict, "accelerationDamping")),
     length_(dofLengths(model)),
     weight_(sqr(length_)),
-    distance_(model.nDoF(), Zero)
+    distance_(model.nDoF(), Zero),
+    finalSolve_(false)
 {}
 
 
