@@ -299,7 +299,6 @@ void Foam::RBD::rigidBodyDriver::solve
     if (Pstream::master())
     {
         floatingPointTraps traps;
-        motion_.setFinalSolve(finalCorrector);
         motion_.solve(time_.value(), time_.deltaTValue(), tau_, fx_);
 
         if (externalForces_)

@@ -31,8 +31,7 @@ License
 
 addRigidBodyCommonKeywords
 (
-    coefficients, Motion, "restraints", "solver", "nIter", "ramp", "rampCoeffs",
-    "couplingFirstForces"
+    coefficients, Motion, "restraints", "solver", "nIter", "ramp", "rampCoeffs"
 );
 
 
@@ -47,22 +46,6 @@ void Foam::RBD::rigidBodyMotion::readCoeffs(const dictionary& dict)
         FatalIOErrorInFunction(dict.lookup("nIter"))
             << "Entry nIter " << nIter_ << " must be at least 1" << nl
             << exit(FatalIOError);
-    }
-
-    {
-        const wordList choices({"previous", "extrapolated"});
-        const word first =
-            dict.getOrDefault<word>("couplingFirstForces", choices[0]);
-        if (!choices.found(first))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry couplingFirstForces " << first << ": unknown;"
-                << " valid choices: " << choices << " (previous: a step's"
-                << " first solve has the forces of the previous step's end;"
-                << " extrapolated: those extrapolated over the two steps"
-                << " before)" << nl << exit(FatalIOError);
-        }
-        extrapolateFirst_ = first == choices[1];
     }
 
     coupling_ = couplingScheme::New(dict, model_);
@@ -469,10 +452,6 @@ Foam::RBD::rigidBodyMotion::rigidBodyMotion
     tauGiven_(model_.nDoF(), Zero),
     fxGiven_(model_.nBodies(), Zero),
     externalForces_(false),
-    extrapolateFirst_(false),
-    fxFirstPrev_(model_.nBodies(), Zero),
-    deltaTFirstPrev_(0),
-    fxFirstPrevValid_(false),
     tauTotal_(model_.nDoF(), Zero),
     fxTotal_(model_.nBodies(), Zero),
     qDdotGiven_(model_.nDoF(), Zero),
@@ -570,26 +549,6 @@ void Foam::RBD::rigidBodyMotion::solve
     {
         fxGiven_[i] = fx[i];
         externalForces_ = externalForces_ || (mag(fx[i]) > 0);
-    }
-
-    if (extrapolateFirst_ && nSolves_ == 0 && externalForces_)
-    {
-        // The forces of the previous step's end, extrapolated to this
-        // step's end from those the previous step's first solve had
-        if (fxFirstPrevValid_ && deltaTFirstPrev_ > 0)
-        {
-            const scalar f = deltaT/deltaTFirstPrev_;
-            forAll(fxGiven_, i)
-            {
-                fxGiven_[i] += f*(fx[i] - fxFirstPrev_[i]);
-            }
-        }
-        forAll(fxFirstPrev_, i)
-        {
-            fxFirstPrev_[i] = fx[i];
-        }
-        deltaTFirstPrev_ = deltaT;
-        fxFirstPrevValid_ = true;
     }
 
     deltaT_ = deltaT;

@@ -37,8 +37,7 @@ namespace couplingSchemes
     addToRunTimeSelectionTable(couplingScheme, addedMass, dictionary);
     addRigidBodyKeywords
     (
-        coupling, addedMass, "addedMassRelaxation", "addedMass",
-        "couplingFinalStep", "secantReuse", "couplingStepFactors"
+        coupling, addedMass, "addedMassRelaxation", "addedMass"
     );
 }
 }
@@ -59,26 +58,6 @@ Foam::scalar totalMass(const Foam::RBD::rigidBodyModel& model)
         m += model.bodies()[i].m();
     }
     return m;
-}
-
-//- Entry couplingFinalStep: whole (false) or half (true)
-bool readFinalHalf(const Foam::dictionary& dict)
-{
-    const Foam::wordList choices({"whole", "half"});
-    const Foam::word step =
-        dict.getOrDefault<Foam::word>("couplingFinalStep", choices[0]);
-
-    if (!choices.found(step))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry couplingFinalStep " << step << ": unknown; valid"
-            << " choices: " << choices << " (whole: Newton's whole step at"
-            << " every solve; half: half of it at a time step's final solve,"
-            << " the mean of the last two solves' answers)"
-            << Foam::nl << Foam::exit(Foam::FatalIOError);
-    }
-
-    return step == choices[1];
 }
 
 //- Entry addedMass: fluid (true) or learnt (false)
@@ -135,38 +114,8 @@ Foam::RBD::couplingSchemes::addedMass::addedMass
     ws_(model),
     gravityScale_(mag(model.g())*sqrt(totalMass(model))),
     omega_(readFactor(dict, "addedMassRelaxation")),
-    finalHalf_(readFinalHalf(dict)),
     aTrial_(model.nDoF(), Zero)
 {
-    {
-        const wordList choices({"one", "learnt"});
-        const word f =
-            dict.getOrDefault<word>("couplingStepFactors", choices[0]);
-        if (!choices.found(f))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry couplingStepFactors " << f << ": unknown; valid"
-                << " choices: " << choices << nl << exit(FatalIOError);
-        }
-        if (f == choices[1])
-        {
-            factors_.reset(new learntRelaxation(model.nDoF()));
-        }
-    }
-
-    if (dict.found("secantReuse"))
-    {
-        const label reuse = dict.get<label>("secantReuse");
-        if (reuse < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry secantReuse " << reuse << ": the time steps whose"
-                << " secants are reused, 0 or more" << nl
-                << exit(FatalIOError);
-        }
-        secant_.reset(new secantAcceleration(length_, reuse));
-    }
-
     if (relaxation_ != 1)
     {
         Info<< "rigidBodyMotion: coupling addedMass, addedMassRelaxation "
@@ -405,8 +354,7 @@ void Foam::RBD::couplingSchemes::addedMass::judgeJacobian()
 void Foam::RBD::couplingSchemes::addedMass::correctWithFluid
 (
     const scalarField& aGiven,
-    scalarField& a,
-    const bool firstSolve
+    scalarField& a
 )
 {
     const bool hasK = kState_ == jacobian::significant;
@@ -426,28 +374,7 @@ void Foam::RBD::couplingSchemes::addedMass::correctWithFluid
     )
     {
         distance_ = x_;
-        if (finalHalf_ && finalSolve_ && !firstSolve)
-        {
-            // The mean of this solve's answer and the previous one's
-            forAll(a, i)
-            {
-                a[i] = aGiven[i] + 0.5*distance_[i];
-            }
-        }
-        else if (factors_.valid())
-        {
-            factors_->relax(aGiven, distance_, a, firstSolve);
-            if (debug)
-            {
-                Info<< "addedMass: step factors " << factors_->factors()
-                    << endl;
-            }
-        }
-        else if (secant_.valid())
-        {
-            secant_->accelerate(aGiven, aTrial_, a, firstSolve);
-        }
-        else if (omega_ == 1)
+        if (omega_ == 1)
         {
             a = aTrial_;
         }
@@ -483,7 +410,7 @@ void Foam::RBD::couplingSchemes::addedMass::correct
 
     if (useFluid_)
     {
-        correctWithFluid(aGiven, a, firstSolve);
+        correctWithFluid(aGiven, a);
         return;
     }
 

@@ -75,8 +75,7 @@ Foam::RBD::couplingScheme::couplingScheme
     damping_(readFactor(dict, "accelerationDamping")),
     length_(dofLengths(model)),
     weight_(sqr(length_)),
-    distance_(model.nDoF(), Zero),
-    finalSolve_(false)
+    distance_(model.nDoF(), Zero)
 {}
 
 
