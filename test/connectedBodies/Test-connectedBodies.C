@@ -63,10 +63,11 @@ Description
     the origin computed from the body's transform, to 1e-12.
 
     The coupling residual beside a prescription (prescribedResidual): a
-    joint heaved by prescribedJointMotion at omega dt 0.63 has a residual of
-    0 (1e-12) at every step (measured along its motor, one relaxed solve a
-    step, it is above the tolerance), while a free body beside it keeps its
-    own: flagged as solved, and in more steps when 0.3 further off.
+    joint heaved by prescribedJointMotion or turned by prescribedRotation
+    at omega dt 0.63 has a residual of 0 (1e-12) at every step (measured
+    along its motor, one relaxed solve a step, it is above the tolerance),
+    while a free body beside it keeps its own: flagged as solved, and in
+    more steps when 0.3 further off.
 
     prescribedJointMotion: a carrier heaved as 0.1 sin(2 pi 0.7 t) m on Pz,
     a pendulum hanging free from it on Ry, gravity, Newmark, 3 s: the heave
@@ -537,8 +538,9 @@ void prescribedHeave()
 
 
 //- The coupling residual beside a prescription: a carrier heaved as a
-//  sine at omega dt = 0.63 (5 Hz, dt 20 ms) and a free body on a spring
-//  beside it, external forces on both.  The prescribed heave cannot be
+//  sine and a rudder turned as one (prescribedRotation), both at omega dt
+//  = 0.63 (5 Hz, dt 20 ms), and a free body on a spring beside them,
+//  external forces on the carrier and the free body.  The prescribed heave cannot be
 //  off, so its residual is 0 at every step (above the tolerance when
 //  measured along its motor, the check's counterpart: one relaxed solve a
 //  step, as a fluid's corrector is); the free body keeps its own, flagged
@@ -549,15 +551,22 @@ void prescribedResidual()
     const std::string text =
         "solver { type Newmark; } g (0 0 -9.81); nIter 1;"
         "accelerationRelaxation 0.7;"
-        "qDot (" + std::to_string(A*w) + " 0);"
+        "qDot (" + std::to_string(A*w) + " 0 0);"
         "bodies {"
         " carrier { type rigidBody; parent root; mass 3;"
         " centreOfMass (0 0 0); inertia (0.1 0 0 0.1 0 0.1);"
         " transform (1 0 0 0 1 0 0 0 1) (0 0 0); joint { type Pz; } }"
         " float { type rigidBody; parent root; mass 1;"
         " centreOfMass (0 0 0); inertia (0.01 0 0 0.01 0 0.01);"
-        " transform (1 0 0 0 1 0 0 0 1) (2 0 0); joint { type Px; } } }"
-        "restraints { heave { type prescribedJointMotion; body carrier;"
+        " transform (1 0 0 0 1 0 0 0 1) (2 0 0); joint { type Px; } }"
+        " rudder { type rigidBody; parent root; mass 2;"
+        " centreOfMass (0 0 -0.3); inertia (0.1 0 0 0.1 0 0.1);"
+        " transform (1 0 0 0 1 0 0 0 1) (4 0 0); joint { type Ry; } } }"
+        "restraints { turn { type prescribedRotation; body rudder;"
+        " axis (0 1 0); omega sine; omegaCoeffs { amplitude 1;"
+        " frequency " + std::to_string(f) + "; scale (0 1 0);"
+        " level (0 0 0); } }"
+        " heave { type prescribedJointMotion; body carrier;"
         " position sine; positionCoeffs { amplitude " + std::to_string(A)
       + "; frequency " + std::to_string(f) + "; scale 1; level 0; } }"
         " spring { type linearSpring; body float; anchor (0 0 0);"
@@ -592,8 +601,16 @@ void prescribedResidual()
         without.measure(d, a);
         d[1] += 0.3*a[1];
         offFree.measure(d, a, m.constraints());
-        worstWith = max(worstWith, with.residual()[0]);
-        worstWithout = max(worstWithout, without.residual()[0]);
+        worstWith = max
+        (
+            worstWith,
+            max(with.residual()[0], with.residual()[2])
+        );
+        worstWithout = max
+        (
+            worstWithout,
+            min(without.residual()[0], without.residual()[2])
+        );
         for (RBD::couplingResidual* r : {&with, &without, &offFree})
         {
             r->solved();
@@ -606,10 +623,11 @@ void prescribedResidual()
     check
     (
         worstWith <= 1e-12 && worstWithout > with.tolerance(),
-        "couplingResidual: a joint heaved by prescribedJointMotion at"
-        " omega dt 0.63 has no residual at any step (largest "
-      + largest.str() + ", 1e-12; measured along its motor it reached "
-      + std::to_string(worstWithout) + ", above the tolerance 0.1)"
+        "couplingResidual: a joint heaved by prescribedJointMotion and one"
+        " turned by prescribedRotation at omega dt 0.63 have no residual at"
+        " any step (largest " + largest.str() + ", 1e-12; measured along"
+        " their motors both reached " + std::to_string(worstWithout)
+      + ", above the tolerance 0.1)"
     );
     check
     (
