@@ -94,6 +94,7 @@ Foam::RBD::restraints::jointPTO::jointPTO
     committed_(false),
     q0_(dofs_.size(), Zero),
     tau0_(dofs_.size(), Zero),
+    powerDoF_(dofs_.size(), Zero),
     power_(0),
     work_(0)
 {
@@ -142,6 +143,21 @@ void Foam::RBD::restraints::jointPTO::restrain
 
 void Foam::RBD::restraints::jointPTO::addColumns(tableRow& row) const
 {
+    if (dofs_.size() == 1)
+    {
+        row.add(name_ + ".force", tau0_[0]);
+    }
+    else
+    {
+        forAll(dofs_, k)
+        {
+            row.add(name_ + ".force" + Foam::name(dofs_[k]), tau0_[k]);
+        }
+        forAll(dofs_, k)
+        {
+            row.add(name_ + ".power" + Foam::name(dofs_[k]), powerDoF_[k]);
+        }
+    }
     row.add(name_ + ".power", power_);
     row.add(name_ + ".work", work_);
 }
@@ -167,7 +183,8 @@ void Foam::RBD::restraints::jointPTO::commit
         }
         q0_[k] = q;
         tau0_[k] = f;
-        power_ -= f*state.qDot()[i];
+        powerDoF_[k] = -f*state.qDot()[i];
+        power_ += powerDoF_[k];
     }
     committed_ = true;
 }
