@@ -118,6 +118,7 @@ const char* model =
     " d2 { type sphericalAngularDamper; body a; coeff 1; }"
     " t { type linearAxialAngularSpring; body b; axis (0 1 0);"
     "     stiffness 10; damping 1; }"
+    " t2 { type sphericalAngularSpring; body j; stiffness 10; damping 1; }"
     " f { type externalForce; body e; location (0 0 0); force (1 2 3); }"
     " w { type softWall; body a; anchor (0 0 0.5); wallNormal (0 0 -1);"
     "     refAttachmentPt (0 0 0); C 0.05; psi 0.1; }"

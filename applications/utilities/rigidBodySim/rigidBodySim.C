@@ -121,8 +121,8 @@ void addOptions()
         " its sixDoFRigidBodyMotion coefficients, as the model they map to),"
         " or else constant/rigidBodyMotionDict; g from them or constant/g;"
         " deltaT, endTime and the write controls from system/controlDict;"
-        " <time>/uniform/rigidBodyMotionState when started from a written"
-        " time."
+        " <time>/uniform/rigidBodyMotionState (or, for a sixDoF dictionary,"
+        " sixDoFRigidBodyMotionState) when started from a written time."
     );
     argList::addNote("");
     argList::addNote
@@ -396,11 +396,15 @@ int main(int argc, char *argv[])
 
     const bool everyStep = args.found("everyStep");
 
+    dictionary startState;
     const dictionary coeffs
     (
-        rigidBodySimCoeffs(runTime, args.found("report"))
+        rigidBodySimCoeffs(runTime, args.found("report"), &startState)
     );
-    RBD::rigidBodyDriver driver(runTime, coeffs, "rigidBodySim", false);
+    RBD::rigidBodyDriver driver
+    (
+        runTime, coeffs, "rigidBodySim", false, startState
+    );
     const word startTimeName(runTime.timeName());
     driver.tableEveryStep(everyStep);
 

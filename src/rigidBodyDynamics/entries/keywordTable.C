@@ -336,9 +336,9 @@ void Foam::RBD::checkHasBodies(const dictionary& dict)
             << " constraints and restraints)." << nl
             << "    The rigidBodyMotion solver reads rigidBodyMotionCoeffs"
             << " instead: bodies with joints, restraints and a solver."
-            << nl << "    rigidBodySim runs the sixDoF dictionary as the"
-            << " model it maps to; rigidBodySim -report prints that"
-            << " model's rigidBodyMotionCoeffs." << nl
+            << nl << "    To run the sixDoF dictionary as the model it maps"
+            << " to, give motionSolver sixDoFRigidBodyMotion; rigidBodySim"
+            << " -report prints that model's rigidBodyMotionCoeffs." << nl
             << "    How to move a sixDoFRigidBodyMotion case across,"
             << " entry by entry: docs/coming-from-stock.md of the"
             << " rigid-body dynamics project" << nl

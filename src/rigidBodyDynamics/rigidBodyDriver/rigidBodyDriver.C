@@ -164,14 +164,15 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
     const Time& runTime,
     const dictionary& coeffs,
     const word& name,
-    const bool externalForces
+    const bool externalForces,
+    const dictionary& startState
 )
 :
     rigidBodyDriver
     (
         runTime,
         coeffs,
-        restartState(runTime, coeffs),
+        restartState(runTime, coeffs, startState),
         name,
         externalForces
     )

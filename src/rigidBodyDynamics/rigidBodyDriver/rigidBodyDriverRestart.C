@@ -29,7 +29,8 @@ License
 Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
 (
     const Time& runTime,
-    const dictionary& coeffs
+    const dictionary& coeffs,
+    const dictionary& startState
 )
 {
     IOobject io
@@ -47,6 +48,12 @@ Foam::dictionary Foam::RBD::rigidBodyDriver::restartState
     {
         Info<< "Restarting from " << io.objectPath() << nl << endl;
         return IOdictionary(io);
+    }
+
+    // Another solver's state, converted (its front-end says so)
+    if (startState.size())
+    {
+        return startState;
     }
 
     // A time a run has written (OpenFOAM's uniform/time) without the

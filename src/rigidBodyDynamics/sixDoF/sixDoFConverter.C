@@ -108,27 +108,9 @@ wordList sixDoFKeywords(const char* type)
     return RBD::keywordTable::keywords("sixDoF", type);
 }
 
-// The precision of the entries made: they are written to text and read
-// back by dictionary::add, and must come back as the same numbers
-class fullPrecision
-{
-    const unsigned old_;
-
-public:
-
-    fullPrecision()
-    :
-        old_(IOstream::defaultPrecision(17))
-    {}
-
-    ~fullPrecision()
-    {
-        IOstream::defaultPrecision(old_);
-    }
-};
-
 // A FatalIOError at dict if value, of its state entry key, is not initial
-// (which names it): a restart's state, not supported yet
+// (which names it): the coefficients' state is the initial one, where the
+// mesh's points are; a restart's is read from its own file
 template<class Type>
 void checkInitial
 (
@@ -143,8 +125,10 @@ void checkInitial
     {
         FatalIOErrorInFunction(dict)
             << "Entry " << key << ' ' << value << " (the state's) is not "
-            << which << ' ' << initial << ": a state moved from the"
-            << " initial one, as a restart's, is not supported yet" << nl
+            << which << ' ' << initial << ": the coefficients give the"
+            << " initial state, where the mesh's points are; a restart's"
+            << " state is read from <time>/uniform/"
+            << "sixDoFRigidBodyMotionState" << nl
             << exit(FatalIOError);
     }
 }
@@ -338,12 +322,11 @@ void Foam::RBD::sixDoFConverter::readConstraints()
 }
 
 
-Foam::dictionary Foam::RBD::sixDoFConverter::joint
-(
-    List<vector>& P,
-    List<vector>& R
-) const
+Foam::dictionary Foam::RBD::sixDoFConverter::joint()
 {
+    List<vector>& P = P_;
+    List<vector>& R = R_;
+
     List<dictionary> parts;
 
     // Translation: free, in a plane, on a line, fixed
@@ -434,62 +417,6 @@ Foam::dictionary Foam::RBD::sixDoFConverter::body
         }
     }
     return b;
-}
-
-
-Foam::scalarField Foam::RBD::sixDoFConverter::qDot
-(
-    const List<vector>& P,
-    const List<vector>& R
-)
-{
-    const vector v(dict_.getOrDefault<vector>("velocity", Zero));
-    const vector pi(dict_.getOrDefault<vector>("angularMomentum", Zero));
-
-    // sixDoF's inertia about the centre of rotation: the parallel axes
-    // theorem's diagonal added to the principal moments, as it reports
-    // omega (sixDoFRigidBodyMotion.C of OpenFOAM v1912)
-    diagTensor JR(J_);
-    const vector r(CofM_ - CofR_);
-    if (magSqr(r) > VSMALL)
-    {
-        JR += mass_*diag(tensor::I*magSqr(r) - sqr(r));
-    }
-    const vector omega
-    (
-        Q0_ & vector(pi.x()/JR.xx(), pi.y()/JR.yy(), pi.z()/JR.zz())
-    );
-
-    scalarField qDot(P.size() + R.size(), Zero);
-    vector vLeft(v);
-    vector omegaLeft(omega);
-    forAll(P, i)
-    {
-        qDot[i] = v & P[i];
-        vLeft -= qDot[i]*P[i];
-    }
-    forAll(R, i)
-    {
-        qDot[P.size() + i] = omega & R[i];
-        omegaLeft -= qDot[P.size() + i]*R[i];
-    }
-
-    if (mag(vLeft) > 1e-12*max(mag(v), SMALL))
-    {
-        WarningInFunction
-            << "velocity " << v << " has " << vLeft << " along directions"
-            << " the constraints fix: dropped, as sixDoF's constraints drop"
-            << " it in the first step" << endl;
-    }
-    if (mag(omegaLeft) > 1e-12*max(mag(omega), SMALL))
-    {
-        WarningInFunction
-            << "angularMomentum " << pi << " gives an angular velocity "
-            << omega << " with " << omegaLeft << " about axes the"
-            << " constraints fix: dropped, as sixDoF's constraints drop it"
-            << " in the first step" << endl;
-    }
-    return qDot;
 }
 
 
@@ -619,7 +546,8 @@ Foam::RBD::sixDoFConverter::sixDoFConverter(const dictionary& meshDict)
     J_(Zero),
     Q0_(tensor::I),
     CofR_(Zero),
-    coeffs_(dict_.name())
+    coeffs_(dict_.name()),
+    constantG_(false)
 {
     const fullPrecision precision;
 
@@ -629,16 +557,19 @@ Foam::RBD::sixDoFConverter::sixDoFConverter(const dictionary& meshDict)
     readConstraints();
     checkInitialState();
 
-    List<vector> P, R;
-    const dictionary jointDict(joint(P, R));
+    const dictionary jointDict(joint());
 
     dictionary bodies;
     bodies.add(bodyName, body(jointDict));
     coeffs_.add("bodies", bodies);
     coeffs_.add("restraints", restraints());
     coeffs_.add("solver", solver());
-    coeffs_.add("q", scalarField(P.size() + R.size(), Zero));
-    coeffs_.add("qDot", qDot(P, R));
+    coeffs_.add("q", scalarField(P_.size() + R_.size(), Zero));
+    coeffs_.add
+    (
+        "qDot",
+        rates(dict_, "velocity", "angularMomentum", true)
+    );
     copyEntries();
 }
 

@@ -48,6 +48,11 @@ namespace RBD
         sixDoFRestraint, linearAxialAngularSpring,
         "axis", "stiffness", "damping", "referenceOrientation"
     );
+    addRigidBodyKeywords
+    (
+        sixDoFRestraint, sphericalAngularSpring,
+        "stiffness", "damping", "referenceOrientation"
+    );
 }
 }
 
@@ -59,8 +64,7 @@ namespace
 // The sixDoF restraints not mapped yet
 const Foam::wordList notSupported
 ({
-    "sphericalAngularSpring", "tabulatedAxialAngularSpring",
-    "linearSpringDamper"
+    "tabulatedAxialAngularSpring", "linearSpringDamper"
 });
 
 } // End anonymous namespace
@@ -104,7 +108,10 @@ Foam::dictionary Foam::RBD::sixDoFConverter::restraint
         d.add("damping", readNonNegative(r, "damping"));
         d.add("restLength", readNonNegative(r, "restLength"));
     }
-    else if (type == "linearAxialAngularSpring")
+    else if
+    (
+        type == "linearAxialAngularSpring" || type == "sphericalAngularSpring"
+    )
     {
         const tensor refQ
         (
@@ -116,7 +123,15 @@ Foam::dictionary Foam::RBD::sixDoFConverter::restraint
             )
         );
         d.add("referenceOrientation", Q0_ & refQ.T());
-        d.add("axis", readAxis(r, "axis"));
+        if (type == "linearAxialAngularSpring")
+        {
+            d.add("axis", readAxis(r, "axis"));
+        }
+        else
+        {
+            // sixDoF's spring turns the principal axes
+            d.add("axes", Q0_);
+        }
         d.add("stiffness", readNonNegative(r, "stiffness"));
         d.add("damping", readNonNegative(r, "damping"));
     }

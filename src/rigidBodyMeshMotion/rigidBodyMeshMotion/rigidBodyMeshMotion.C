@@ -60,19 +60,24 @@ addRigidBodyKeywords
 Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
 (
     const polyMesh& mesh,
-    const IOdictionary& dict
+    const IOdictionary& dict,
+    const word& type,
+    const dictionary& coeffs,
+    const dictionary& startState
 )
 :
-    displacementMotionSolver(mesh, dict, typeName),
+    displacementMotionSolver(mesh, dict, type),
+    coeffs_(coeffs),
     driver_
     (
         mesh.time(),
-        coeffDict(),
+        coeffs_,
         typeName,
-        !coeffDict().getOrDefault<Switch>("test", false)
+        !coeffs_.getOrDefault<Switch>("test", false),
+        startState
     ),
-    test_(coeffDict().getOrDefault<Switch>("test", false)),
-    rhoName_(coeffDict().getOrDefault<word>("rho", "rho")),
+    test_(coeffs_.getOrDefault<Switch>("test", false)),
+    rhoName_(coeffs_.getOrDefault<word>("rho", "rho")),
     rhoInf_(1),
     addedMassRamp_(-1),
     fx_(driver_.model().nBodies(), Zero)
@@ -82,11 +87,28 @@ Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
 
     if (rhoName_ == "rhoInf")
     {
-        rhoInf_ = RBD::readPositive(coeffDict(), "rhoInf");
+        rhoInf_ = RBD::readPositive(coeffs_, "rhoInf");
     }
 
     readBodyMeshes();
 }
+
+
+Foam::rigidBodyMeshMotion::rigidBodyMeshMotion
+(
+    const polyMesh& mesh,
+    const IOdictionary& dict
+)
+:
+    rigidBodyMeshMotion
+    (
+        mesh,
+        dict,
+        typeName,
+        dict.optionalSubDict(typeName + "Coeffs"),
+        dictionary::null
+    )
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -152,6 +174,12 @@ bool Foam::rigidBodyMeshMotion::writeObject
 }
 
 
+Foam::dictionary Foam::rigidBodyMeshMotion::rigidBodyCoeffs() const
+{
+    return coeffDict();
+}
+
+
 bool Foam::rigidBodyMeshMotion::read()
 {
     if (displacementMotionSolver::read())
@@ -160,7 +188,8 @@ bool Foam::rigidBodyMeshMotion::read()
         addedMass_.clear();
         addedMassRamp_ = -1;
         residualField_.clear();
-        return driver_.read(coeffDict());
+        coeffs_ = rigidBodyCoeffs();
+        return driver_.read(coeffs_);
     }
 
     return false;

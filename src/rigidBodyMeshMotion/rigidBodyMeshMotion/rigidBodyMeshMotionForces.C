@@ -45,7 +45,7 @@ void Foam::rigidBodyMeshMotion::fluidForces()
          && !mesh().foundObject<volScalarField>(rhoName_)
         )
         {
-            FatalIOErrorInFunction(coeffDict().lookup("rho"))
+            FatalIOErrorInFunction(coeffs_.lookup("rho"))
                 << "Entry rho " << rhoName_ << ": no such density field;"
                 << " give the name of one or, for a fluid of constant"
                 << " density, rho rhoInf with rhoInf" << nl

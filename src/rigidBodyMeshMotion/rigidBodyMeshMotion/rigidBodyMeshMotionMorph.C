@@ -119,12 +119,12 @@ Foam::rigidBodyMeshMotion::bodyMesh Foam::rigidBodyMeshMotion::readBodyMesh
 
 void Foam::rigidBodyMeshMotion::readBodyMeshes()
 {
-    const dictionary& bodiesDict = coeffDict().subDict("bodies");
+    const dictionary& bodiesDict = coeffs_.subDict("bodies");
     const RBD::rigidBodyModel& model = driver_.model();
 
     // Body transforms of the dictionary's initial state, which points0
     // belong to
-    const RBD::rigidBodyModelState state00(model.nDoF(), coeffDict());
+    const RBD::rigidBodyModelState state00(model.nDoF(), coeffs_);
     RBD::rigidBodyModelWorkspace ws00(model);
     model.kinematics(state00, ws00);
 
@@ -139,7 +139,7 @@ void Foam::rigidBodyMeshMotion::readBodyMeshes()
 
     if (bodies.empty())
     {
-        FatalIOErrorInFunction(coeffDict())
+        FatalIOErrorInFunction(coeffs_)
             << "No body has patches: give the bodies that move the mesh"
             << " their patches, innerDistance and outerDistance" << nl
             << "Bodies: " << model.bodyNames() << nl

@@ -63,13 +63,13 @@ void Foam::rigidBodyMeshMotion::useResidualControl
 
     if
     (
-        coeffDict().found("couplingTolerance")
-     && coeffDict().get<scalar>("couplingTolerance") != tol
+        coeffs_.found("couplingTolerance")
+     && coeffs_.get<scalar>("couplingTolerance") != tol
     )
     {
-        FatalIOErrorInFunction(coeffDict())
+        FatalIOErrorInFunction(coeffs_)
             << "couplingTolerance "
-            << coeffDict().get<scalar>("couplingTolerance")
+            << coeffs_.get<scalar>("couplingTolerance")
             << " differs from the tolerance " << tol << " of PIMPLE"
             << " residualControl entry " << e.keyword() << " in "
             << fvm.solutionDict().name() << ": they are one tolerance."
