@@ -43,21 +43,26 @@ Foam::autoPtr<Foam::RBD::ptoController> Foam::RBD::ptoController::New
 {
     const word type(dict.get<word>("type"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
-    if (!cstrIter.found())
+    // No table at all until a library registers a controller
+    if
+    (
+        !dictionaryConstructorTablePtr_
+     || !dictionaryConstructorTablePtr_->found(type)
+    )
     {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "ptoController",
-            type,
-            *dictionaryConstructorTablePtr_
-        )   << "Load the library that defines it with libs (\"libNAME.so\")"
-            << " in system/controlDict" << nl
+        FatalIOErrorInFunction(dict)
+            << "Unknown ptoController type " << type << "; the types loaded: "
+            << (
+                   dictionaryConstructorTablePtr_
+                 ? dictionaryConstructorTablePtr_->sortedToc()
+                 : wordList()
+               ) << nl
+            << "A controller is a class of the user's own library: load it"
+            << " with libs (\"libNAME.so\") in system/controlDict" << nl
             << exit(FatalIOError);
     }
 
-    return cstrIter()(dict);
+    return dictionaryConstructorTablePtr_->cfind(type)()(dict);
 }
 
 
