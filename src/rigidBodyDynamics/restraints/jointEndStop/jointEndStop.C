@@ -50,15 +50,18 @@ Foam::scalar Foam::RBD::restraints::jointEndStop::force
     const scalar qDot
 ) const
 {
-    if (q > maximum_[k])
-    {
-        return min(-stiffness_[k]*(q - maximum_[k]) - damping_[k]*qDot, 0);
-    }
-    if (q < minimum_[k])
-    {
-        return max(-stiffness_[k]*(q - minimum_[k]) - damping_[k]*qDot, 0);
-    }
-    return 0;
+    // The distance past the limit, d, and the spring's force's size there
+    const scalar d =
+        q > maximum_[k] ? q - maximum_[k]
+      : q < minimum_[k] ? q - minimum_[k]
+      : 0;
+    const scalar spring = stiffness_[k]*mag(d);
+
+    // The damper's force no larger than the spring's: the force is 0 at
+    // the limit (continuous, so the step's last evaluation and its end
+    // agree) and never pulls
+    const scalar damper = max(min(damping_[k]*qDot, spring), -spring);
+    return d == 0 ? 0 : -stiffness_[k]*d - damper;
 }
 
 
