@@ -141,6 +141,12 @@ Foam::RBD::rigidBodyDriver::rigidBodyDriver
         motion_.state().t() = runTime.value();
     }
 
+    // A prescription that starts off its rate, said once (not on restart)
+    if (!stateDict.found("t"))
+    {
+        motion_.checkPrescribedStart();
+    }
+
     // The start committed as the first step's (the restraints' own states
     // start there), with its row where its forces are known (no external
     // forces: a fluid's are known only once the first solve has computed
@@ -306,7 +312,8 @@ void Foam::RBD::rigidBodyDriver::solve
             residual_.measure
             (
                 motion_.coupling().distance(),
-                motion_.state().qDdot()
+                motion_.state().qDdot(),
+                motion_.constraints()
             );
         }
 

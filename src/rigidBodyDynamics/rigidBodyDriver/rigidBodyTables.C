@@ -92,6 +92,10 @@ void Foam::RBD::rigidBodyTables::fillRow
     }
     row.add("restraintForce", fxR_[master].l());
     row.add("restraintMoment", fxR_[master].w());
+    for (const label i : dofs_[bi])
+    {
+        row.add("restraintJointForce" + Foam::name(i), tauR_[i]);
+    }
     row.add("kineticEnergy", body.kineticEnergy(ws.v[master]));
     row.add
     (

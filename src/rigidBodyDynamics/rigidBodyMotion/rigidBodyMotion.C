@@ -206,6 +206,44 @@ void Foam::RBD::rigidBodyMotion::checkPrescriptions(const dictionary& dict)
 }
 
 
+void Foam::RBD::rigidBodyMotion::checkPrescribedStart()
+{
+    if (prescribing_.empty())
+    {
+        return;
+    }
+    prescribe(state_);
+    model_.motorResponses(state_, ws_, prescriptions_);
+    wsValid_ = true;
+
+    forAll(prescribing_, s)
+    {
+        const prescription& ps = prescribing_[s];
+
+        // A start off the prescribed rate jumps onto it in the first step
+        scalar rate0 = 0;
+        forAll(ps.row, i)
+        {
+            rate0 += ps.row[i]*state_.qDot()[i];
+        }
+        if
+        (
+            mag(rate0 - ps.rate)
+          > 1e-6*max(mag(ps.rate), mag(rate0)) + VSMALL
+        )
+        {
+            WarningInFunction
+                << "Restraint " << ps.name() << " (" << ps.type()
+                << ") prescribes the rate " << ps.rate << " at t = "
+                << state_.t() << ", but the state starts at " << rate0
+                << " (the motion's qDot): the motion jumps to the"
+                << " prescribed rate in the first step.  Give qDot so"
+                << " that the start is at the prescribed rate" << endl;
+        }
+    }
+}
+
+
 void Foam::RBD::rigidBodyMotion::prescribe(const rigidBodyModelState& state)
 {
     forAll(prescribing_, s)

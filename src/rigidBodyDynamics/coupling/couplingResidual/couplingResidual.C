@@ -58,6 +58,7 @@ Foam::RBD::couplingResidual::couplingResidual
     peakPrev_(model.nDoF(), Zero),
     sign_(model.nDoF(), Zero),
     residual_(model.nDoF(), Zero),
+    free_(model.nDoF(), Zero),
     nMeasured_(0),
     max_(0),
     nSteps_(0),
@@ -155,6 +156,37 @@ void Foam::RBD::couplingResidual::measure
         );
         residual_[i] = mag(d[i])/max(scale, VSMALL);
     }
+}
+
+
+void Foam::RBD::couplingResidual::measure
+(
+    const scalarField& d,
+    const scalarField& a,
+    const UPtrList<rateConstraint>& prescriptions
+)
+{
+    // Each motor's share of d taken out in turn (a motor on one degree of
+    // freedom takes all of it)
+    free_ = d;
+    forAll(prescriptions, s)
+    {
+        const scalarField& m = prescriptions[s].motor;
+        scalar md = 0, mm = 0;
+        forAll(m, i)
+        {
+            md += m[i]*free_[i];
+            mm += m[i]*m[i];
+        }
+        if (mm > 0)
+        {
+            forAll(m, i)
+            {
+                free_[i] -= md/mm*m[i];
+            }
+        }
+    }
+    measure(free_, a);
 }
 
 

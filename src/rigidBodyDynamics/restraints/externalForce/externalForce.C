@@ -69,7 +69,7 @@ Foam::RBD::restraints::externalForce::externalForce(const externalForce& ef)
 :
     restraint(ef),
     location_(ef.location_),
-    force_(ef.force_->clone().ptr()),
+    force_(ef.force_.valid() ? ef.force_->clone().ptr() : nullptr),
     moment_(ef.moment_.valid() ? ef.moment_->clone().ptr() : nullptr),
     locationFrame_(ef.locationFrame_),
     forceFrame_(ef.forceFrame_)
@@ -112,7 +112,7 @@ void Foam::RBD::restraints::externalForce::restrain
 ) const
 {
     const scalar t = state.t();
-    vector F(force_->value(t));
+    vector F(force_.valid() ? force_->value(t) : Zero);
     vector M(moment_.valid() ? moment_->value(t) : Zero);
 
     const vector p
@@ -137,8 +137,22 @@ void Foam::RBD::restraints::externalForce::restrain
 bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
 {
     restraint::read(dict);
-    location_ = dict.get<vector>("location");
-    force_ = readFunction1<vector>(dict, "force");
+    if (!dict.found("force") && !dict.found("moment"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Restraint " << name_ << " (externalForce) has neither a"
+            << " force nor a moment: give force, moment or both (each a"
+            << " Function1 of time)" << nl << exit(FatalIOError);
+    }
+
+    // A force needs its line of action; a pure moment needs none
+    force_.clear();
+    location_ = Zero;
+    if (dict.found("force"))
+    {
+        location_ = dict.get<vector>("location");
+        force_ = readFunction1<vector>(dict, "force");
+    }
     moment_.clear();
     if (dict.found("moment"))
     {
@@ -153,8 +167,11 @@ bool Foam::RBD::restraints::externalForce::read(const dictionary& dict)
 void Foam::RBD::restraints::externalForce::write(Ostream& os) const
 {
     restraint::write(os);
-    os.writeEntry("location", location_);
-    force_->writeData(os);
+    if (force_.valid())
+    {
+        os.writeEntry("location", location_);
+        force_->writeData(os);
+    }
     if (moment_.valid())
     {
         moment_->writeData(os);

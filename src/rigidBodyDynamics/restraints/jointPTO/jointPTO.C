@@ -189,6 +189,7 @@ Foam::RBD::restraints::jointPTO::jointPTO
     t0_(-GREAT),
     q0_(dofs_.size(), Zero),
     tau0_(dofs_.size(), Zero),
+    powerDoF_(dofs_.size(), Zero),
     power_(0),
     work_(0),
     latchTime_(0),
@@ -234,6 +235,7 @@ Foam::RBD::restraints::jointPTO::jointPTO(const jointPTO& pto)
     t0_(pto.t0_),
     q0_(pto.q0_),
     tau0_(pto.tau0_),
+    powerDoF_(pto.powerDoF_),
     power_(pto.power_),
     work_(pto.work_),
     latchTime_(pto.latchTime_),
@@ -301,6 +303,21 @@ void Foam::RBD::restraints::jointPTO::restrain
 
 void Foam::RBD::restraints::jointPTO::addColumns(tableRow& row) const
 {
+    if (dofs_.size() == 1)
+    {
+        row.add(name_ + ".force", tau0_[0]);
+    }
+    else
+    {
+        forAll(dofs_, k)
+        {
+            row.add(name_ + ".force" + Foam::name(dofs_[k]), tau0_[k]);
+        }
+        forAll(dofs_, k)
+        {
+            row.add(name_ + ".power" + Foam::name(dofs_[k]), powerDoF_[k]);
+        }
+    }
     row.add(name_ + ".power", power_);
     row.add(name_ + ".work", work_);
 }
@@ -341,7 +358,8 @@ void Foam::RBD::restraints::jointPTO::commit
         }
         q0_[k] = q;
         tau0_[k] = f;
-        power_ -= f*state.qDot()[i];
+        powerDoF_[k] = -f*state.qDot()[i];
+        power_ += powerDoF_[k];
     }
 
     // The impulse that caught the joint (once)
@@ -373,6 +391,7 @@ bool Foam::RBD::restraints::jointPTO::writeState(Ostream& os) const
     os.writeEntry("q", q0_);
     os.writeEntry("force", tau0_);
     os.writeEntry("power", power_);
+    os.writeEntry("powerDoF", powerDoF_);
     os.writeEntry("t", t0_);
     os.writeEntry("qDot", qDot0_);
     os.writeEntry("latched", latch_.active);
@@ -408,6 +427,11 @@ void Foam::RBD::restraints::jointPTO::readState(const dictionary& dict)
         q0_ = q;
         tau0_ = f;
         dict.readIfPresent("power", power_);
+        scalarField p;
+        if (dict.readIfPresent("powerDoF", p) && p.size() == powerDoF_.size())
+        {
+            powerDoF_ = p;
+        }
         dict.readIfPresent("t", t0_);
         dict.readIfPresent("qDot", qDot0_);
         dict.readIfPresent("latched", latch_.active);

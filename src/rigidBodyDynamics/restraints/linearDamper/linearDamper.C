@@ -51,9 +51,32 @@ Foam::RBD::restraints::linearDamper::linearDamper
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model)
+    statefulRestraint(name, dict, model),
+    committed_(false),
+    t0_(0),
+    force0_(Zero),
+    power_(0),
+    work_(0)
 {
     read(dict);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::RBD::restraints::linearDamper::forceBetween
+(
+    const rigidBodyModelWorkspace& ws
+) const
+{
+    const rigidBodyModel::pointMotion pm
+    (
+        model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
+    );
+    const vector local(model_.X0(anchorBodyID_, ws).transformPoint(pm.x));
+    return
+        -coeff_
+       *(pm.v - model_.globalPointMotion(anchorBodyID_, local, ws).v);
 }
 
 
@@ -88,6 +111,75 @@ void Foam::RBD::restraints::linearDamper::restrain
 }
 
 
+void Foam::RBD::restraints::linearDamper::addColumns(tableRow& row) const
+{
+    if (anchorBodyID_ >= 0)
+    {
+        row.add(name_ + ".force", force0_);
+        row.add(name_ + ".power", power_);
+        row.add(name_ + ".work", work_);
+    }
+}
+
+
+void Foam::RBD::restraints::linearDamper::commit
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    if (anchorBodyID_ < 0)
+    {
+        return;
+    }
+
+    // Its power: -F.(v - vAnchor) = |F|^2/coeff
+    const vector F(forceBetween(ws));
+    const scalar P = coeff_ > 0 ? magSqr(F)/coeff_ : 0;
+
+    // The trapezoidal rule over the step since the last commit, over its
+    // deltaT (not the difference of the times, whose round-off differs
+    // between a run and its restart)
+    if (committed_ && state.t() != t0_)
+    {
+        work_ += 0.5*(power_ + P)*state.deltaT();
+    }
+    t0_ = state.t();
+    force0_ = F;
+    power_ = P;
+    committed_ = true;
+}
+
+
+bool Foam::RBD::restraints::linearDamper::writeState(Ostream& os) const
+{
+    if (anchorBodyID_ < 0)
+    {
+        return false;
+    }
+    os.writeEntry("work", work_);
+    os.writeEntry("t", t0_);
+    os.writeEntry("force", force0_);
+    os.writeEntry("power", power_);
+    return true;
+}
+
+
+void Foam::RBD::restraints::linearDamper::readState(const dictionary& dict)
+{
+    if
+    (
+        dict.readIfPresent("work", work_)
+     && dict.readIfPresent("t", t0_)
+     && dict.readIfPresent("power", power_)
+    )
+    {
+        dict.readIfPresent("force", force0_);
+        committed_ = true;
+    }
+}
+
+
 void Foam::RBD::restraints::linearDamper::describe
 (
     const rigidBodyModelWorkspace&,
@@ -100,7 +192,7 @@ void Foam::RBD::restraints::linearDamper::describe
 
 bool Foam::RBD::restraints::linearDamper::read(const dictionary& dict)
 {
-    restraint::read(dict);
+    statefulRestraint::read(dict);
     coeff_ = readNonNegative(dict, "coeff");
     refAttachmentPt_ =
         dict.getOrDefault<vector>("refAttachmentPt", Zero);
@@ -114,7 +206,7 @@ bool Foam::RBD::restraints::linearDamper::read(const dictionary& dict)
 
 void Foam::RBD::restraints::linearDamper::write(Ostream& os) const
 {
-    restraint::write(os);
+    statefulRestraint::write(os);
     os.writeEntry("coeff", coeff_);
     os.writeEntry("refAttachmentPt", refAttachmentPt_);
     if (anchorBodyID_ >= 0)

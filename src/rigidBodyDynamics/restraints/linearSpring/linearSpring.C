@@ -53,7 +53,12 @@ Foam::RBD::restraints::linearSpring::linearSpring
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model)
+    statefulRestraint(name, dict, model),
+    committed_(false),
+    length0_(0),
+    tension0_(0),
+    power_(0),
+    work_(0)
 {
     read(dict);
 }
@@ -135,6 +140,94 @@ void Foam::RBD::restraints::linearSpring::restrain
 }
 
 
+void Foam::RBD::restraints::linearSpring::length
+(
+    const rigidBodyModelWorkspace& ws,
+    scalar& L,
+    scalar& LDot
+) const
+{
+    const rigidBodyModel::pointMotion pm
+    (
+        model_.globalPointMotion(bodyID_, refAttachmentPt_, ws)
+    );
+    const rigidBodyModel::pointMotion am
+    (
+        model_.globalPointMotion(anchorBodyID_, anchor_, ws)
+    );
+    const vector r(pm.x - am.x);
+    L = mag(r);
+    LDot = L < VSMALL ? 0 : (r/L) & (pm.v - am.v);
+}
+
+
+void Foam::RBD::restraints::linearSpring::addColumns(tableRow& row) const
+{
+    if (anchorBodyID_ >= 0)
+    {
+        row.add(name_ + ".tension", tension0_);
+        row.add(name_ + ".power", power_);
+        row.add(name_ + ".work", work_);
+    }
+}
+
+
+void Foam::RBD::restraints::linearSpring::commit
+(
+    const rigidBodyModelState&,
+    const rigidBodyModelWorkspace& ws
+)
+{
+    if (anchorBodyID_ < 0)
+    {
+        return;
+    }
+
+    scalar L, LDot;
+    length(ws, L, LDot);
+    const scalar T = stiffness_*(L - restLength_) + damping_*LDot;
+
+    // The trapezoidal rule over the step since the last commit
+    if (committed_)
+    {
+        work_ += 0.5*(tension0_ + T)*(L - length0_);
+    }
+    length0_ = L;
+    tension0_ = T;
+    power_ = T*LDot;
+    committed_ = true;
+}
+
+
+bool Foam::RBD::restraints::linearSpring::writeState(Ostream& os) const
+{
+    if (anchorBodyID_ < 0)
+    {
+        return false;
+    }
+    os.writeEntry("work", work_);
+    os.writeEntry("length", length0_);
+    os.writeEntry("tension", tension0_);
+    os.writeEntry("power", power_);
+    return true;
+}
+
+
+void Foam::RBD::restraints::linearSpring::readState(const dictionary& dict)
+{
+    if
+    (
+        dict.readIfPresent("work", work_)
+     && dict.readIfPresent("length", length0_)
+     && dict.readIfPresent("tension", tension0_)
+    )
+    {
+        dict.readIfPresent("power", power_);
+        committed_ = true;
+    }
+}
+
+
 void Foam::RBD::restraints::linearSpring::describe
 (
     const rigidBodyModelWorkspace&,
@@ -158,7 +251,7 @@ void Foam::RBD::restraints::linearSpring::describe
 
 bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
 {
-    restraint::read(dict);
+    statefulRestraint::read(dict);
 
     anchor_ = dict.get<vector>("anchor");
     anchorBodyID_ = readAnchorBody(dict);
@@ -175,7 +268,7 @@ bool Foam::RBD::restraints::linearSpring::read(const dictionary& dict)
 
 void Foam::RBD::restraints::linearSpring::write(Ostream& os) const
 {
-    restraint::write(os);
+    statefulRestraint::write(os);
     os.writeEntry("anchor", anchor_);
     if (anchorBodyID_ >= 0)
     {

@@ -102,27 +102,6 @@ Foam::RBD::restraints::nonlinearJointSpring::nonlinearJointSpring
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::RBD::restraints::nonlinearJointSpring::addColumns
-(
-    tableRow& row
-) const
-{
-    const scalarField& tau = committedForce();
-    if (tau.size() == 1)
-    {
-        row.add(name_ + ".force", tau[0]);
-    }
-    else
-    {
-        forAll(tau, k)
-        {
-            row.add(name_ + ".force" + Foam::name(k), tau[k]);
-        }
-    }
-    jointPTO::addColumns(row);
-}
-
-
 bool Foam::RBD::restraints::nonlinearJointSpring::read
 (
     const dictionary& dict
