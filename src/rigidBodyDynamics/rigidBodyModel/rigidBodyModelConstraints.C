@@ -57,6 +57,25 @@ Foam::scalar Foam::RBD::rigidBodyModel::rate
 }
 
 
+Foam::scalar Foam::RBD::rigidBodyModel::motorRate
+(
+    const rateConstraint& c,
+    const scalarField& qDot
+) const
+{
+    const scalarField& motor = c.motor;
+    scalar r = 0;
+    forAll(motor, j)
+    {
+        if (motor[j] != 0)
+        {
+            r += motor[j]*qDot[j];
+        }
+    }
+    return r;
+}
+
+
 void Foam::RBD::rigidBodyModel::angularRow
 (
     const label bodyID,
@@ -117,8 +136,10 @@ void Foam::RBD::rigidBodyModel::constraintResiduals
     {
         const rateConstraint& c = C[r];
         ws.motorMoments[r] =
-            c.acceleration + c.rateGain*(c.rate - rate(c, ws.qDot))
-          - (rate(c, qDdot) + c.bias);
+            c.active
+          ? c.acceleration + c.rateGain*(c.rate - rate(c, ws.qDot))
+          - (rate(c, qDdot) + c.bias)
+          : 0;
     }
 }
 
@@ -147,6 +168,18 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
     forAll(C, s)
     {
+        // One left out: no response, and its own row and column those of
+        // the identity
+        if (!C[s].active)
+        {
+            ws.responseQDdot[s] = Zero;
+            forAll(C, r)
+            {
+                ws.constraintMatrix(r, s) = (r == s ? 1 : 0);
+            }
+            continue;
+        }
+
         // The motor's unit force: joint forces, motor, and no others
         ws.responseBias = Zero;
         const scalarField& f = C[s].motor;
@@ -221,7 +254,8 @@ void Foam::RBD::rigidBodyModel::unitMotorResponses
 
         forAll(C, r)
         {
-            ws.constraintMatrix(r, s) = rate(C[r], ws.responseQDdot[s]);
+            ws.constraintMatrix(r, s) =
+                C[r].active ? rate(C[r], ws.responseQDdot[s]) : 0;
         }
     }
 }
@@ -373,7 +407,10 @@ void Foam::RBD::rigidBodyModel::constrainState
     // The prescribed positions, if any, met exactly
     forAll(C, r)
     {
-        C[r].place(state.q());
+        if (C[r].active)
+        {
+            C[r].place(state.q());
+        }
     }
 
     // The responses to the motors' unit forces (they depend on the
@@ -383,11 +420,25 @@ void Foam::RBD::rigidBodyModel::constrainState
     // The motors' impulses that bring the rates to the constraints'
     forAll(C, r)
     {
-        ws.motorMoments[r] = C[r].rate - rate(C[r], state.qDot());
+        ws.motorMoments[r] =
+            C[r].active ? C[r].rate - rate(C[r], state.qDot()) : 0;
     }
     solveConstraints(C, ws);
 
+    // Each impulse's work: the impulse times the mean of its motor's
+    // rates before and after (their sum is the change of the kinetic
+    // energy, (qDot0 + qDot1)/2 & H (qDot1 - qDot0))
+    forAll(C, r)
+    {
+        C[r].impulseWork =
+            0.5*ws.motorMoments[r]*motorRate(C[r], state.qDot());
+    }
     addResponses(ws, state.qDot());
+    forAll(C, r)
+    {
+        C[r].impulseWork +=
+            0.5*ws.motorMoments[r]*motorRate(C[r], state.qDot());
+    }
 
     // At the new velocities, the change of the motors' forces that gives
     // the rates' changes the constraints ask

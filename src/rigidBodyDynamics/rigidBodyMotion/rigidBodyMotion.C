@@ -129,16 +129,19 @@ void Foam::RBD::rigidBodyMotion::readRestraints(const dictionary& dict)
     }
 
     // The prescriptions, as themselves and as the model's constraints,
-    // and the restraints with states of their own
-    label nP = 0, nS = 0;
+    // then the other restraints' constraints (a PTO's latch), and the
+    // restraints with states of their own
+    label nP = 0, nC = 0, nS = 0;
     for (restraint& r : restraints_)
     {
         nP += isA<prescription>(r) ? 1 : 0;
+        nC += r.constraint() ? 1 : 0;
         nS += isA<statefulRestraint>(r) ? 1 : 0;
     }
     prescribing_.setSize(nP);
-    prescriptions_.setSize(nP);
+    prescriptions_.setSize(nC);
     stateful_.setSize(nS);
+    label nOthers = nP;
     nP = 0;
     nS = 0;
     for (restraint& r : restraints_)
@@ -149,13 +152,17 @@ void Foam::RBD::rigidBodyMotion::readRestraints(const dictionary& dict)
             prescribing_.set(nP, p);
             prescriptions_.set(nP++, p);
         }
+        else if (r.constraint())
+        {
+            prescriptions_.set(nOthers++, r.constraint());
+        }
         statefulRestraint* sr = dynamic_cast<statefulRestraint*>(&r);
         if (sr)
         {
             stateful_.set(nS++, sr);
         }
     }
-    ws_.setConstraints(model_, nP);
+    ws_.setConstraints(model_, nC);
 }
 
 
@@ -545,6 +552,9 @@ void Foam::RBD::rigidBodyMotion::commitRestraints()
 {
     if (stateful_.size())
     {
+        // The motors' forces at the state (a latch's, for its work)
+        prescriptions();
+
         const rigidBodyModelWorkspace& ws = workspace();
         startRestraints(state_, ws);
         forAll(stateful_, si)
@@ -605,7 +615,7 @@ void Foam::RBD::rigidBodyMotion::solve
 
         // The prescribed rates met at the end of the solve, whatever the
         // relaxation and the scheme left
-        if (prescribing_.size())
+        if (prescriptions_.size())
         {
             prescribe(state_);
             model_.constrainState(state_, ws_, prescriptions_);
@@ -622,7 +632,7 @@ void Foam::RBD::rigidBodyMotion::solve
 const Foam::UPtrList<Foam::RBD::prescription>&
 Foam::RBD::rigidBodyMotion::prescriptions()
 {
-    if (!momentsValid_ && prescribing_.size())
+    if (!momentsValid_ && prescriptions_.size())
     {
         evaluate(state_, ws_.qDdotScratch);
         momentsValid_ = true;

@@ -80,6 +80,100 @@ Foam::scalarField Foam::RBD::restraints::jointPTO::readPerDoF
 }
 
 
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::RBD::restraints::jointPTO::readControl(const dictionary& dict)
+{
+    const word keys[3] = {"latchTime", "declutchTime", "declutchVelocity"};
+    scalar* values[3] = {&latchTime_, &declutchTime_, &declutchVelocity_};
+    for (label j = 0; j < 3; ++j)
+    {
+        scalar& v = *values[j];
+        if (dict.readIfPresent(keys[j], v) && !(v > 0 && v < GREAT))
+        {
+            FatalIOErrorInFunction(dict.lookup(keys[j]))
+                << "Entry " << keys[j] << " of restraint " << name_ << ": "
+                << v << " must be positive and finite" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    if (dict.found("controller"))
+    {
+        controller_ = ptoController::New(dict.subDict("controller"));
+    }
+
+    if
+    (
+        latchTime_ > 0 || declutchTime_ > 0 || declutchVelocity_ > 0
+     || controller_.valid()
+    )
+    {
+        if (dofs_.size() != 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Restraint " << name_ << ": latchTime, declutchTime,"
+                << " declutchVelocity and controller need a joint of one"
+                << " degree of freedom;"
+                << " the joint of body " << model_.name(masterID_) << " has "
+                << dofs_.size() << nl << exit(FatalIOError);
+        }
+        if (latchTime_ > 0 && (declutchTime_ > 0 || declutchVelocity_ > 0))
+        {
+            FatalIOErrorInFunction(dict.lookup("latchTime"))
+                << "Restraint " << name_ << ": give latchTime (latching) or"
+                << " declutchTime and declutchVelocity (declutching), not"
+                << " both" << nl << exit(FatalIOError);
+        }
+    }
+
+    // The latch: the joint's velocity held by its own force
+    latch_.row[dofs_[0]] = 1;
+    latch_.motor[dofs_[0]] = 1;
+    latch_.active = false;
+}
+
+
+void Foam::RBD::restraints::jointPTO::control
+(
+    const scalar qDot,
+    const scalar qDotBefore,
+    const scalar t,
+    const scalar deltaT
+)
+{
+    // A change of sign over the step just committed (a joint released
+    // from rest, or from a latch, does not count until it moves)
+    const bool reversed = qDotBefore*qDot < 0;
+
+    if (latchTime_ > 0)
+    {
+        if (latch_.active)
+        {
+            // Released once it has held for latchTime (to half a step)
+            latch_.active = (t - latchStart_ < latchTime_ - 0.5*deltaT);
+        }
+        else if (reversed)
+        {
+            latch_.active = true;
+            latchStart_ = t;
+        }
+    }
+
+    if (declutchTime_ > 0 || declutchVelocity_ > 0)
+    {
+        if (reversed)
+        {
+            declutchStart_ = t;
+        }
+        const bool justReversed =
+            declutchTime_ > 0
+         && t - declutchStart_ < declutchTime_ - 0.5*deltaT;
+        declutched_ = justReversed || mag(qDot) < declutchVelocity_;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::restraints::jointPTO::jointPTO
@@ -92,11 +186,20 @@ Foam::RBD::restraints::jointPTO::jointPTO
     statefulRestraint(name, dict, model),
     dofs_(model.bodyDoFs(masterID_)),
     committed_(false),
+    t0_(-GREAT),
     q0_(dofs_.size(), Zero),
     tau0_(dofs_.size(), Zero),
     powerDoF_(dofs_.size(), Zero),
     power_(0),
-    work_(0)
+    work_(0),
+    latchTime_(0),
+    latch_(model.nDoF()),
+    latchStart_(0),
+    declutchTime_(0),
+    declutchVelocity_(0),
+    declutched_(false),
+    declutchStart_(-GREAT),
+    qDot0_(0)
 {
     // A quaternion's components are no angles
     const label ancestor = model.jointAncestor(masterID_);
@@ -120,10 +223,56 @@ Foam::RBD::restraints::jointPTO::jointPTO
             << model.name(masterID_) << " has no degree of freedom" << nl
             << exit(FatalIOError);
     }
+    readControl(dict);
 }
 
 
+Foam::RBD::restraints::jointPTO::jointPTO(const jointPTO& pto)
+:
+    statefulRestraint(pto),
+    dofs_(pto.dofs_),
+    committed_(pto.committed_),
+    t0_(pto.t0_),
+    q0_(pto.q0_),
+    tau0_(pto.tau0_),
+    powerDoF_(pto.powerDoF_),
+    power_(pto.power_),
+    work_(pto.work_),
+    latchTime_(pto.latchTime_),
+    latch_(pto.latch_),
+    latchStart_(pto.latchStart_),
+    declutchTime_(pto.declutchTime_),
+    declutchVelocity_(pto.declutchVelocity_),
+    declutched_(pto.declutched_),
+    declutchStart_(pto.declutchStart_),
+    qDot0_(pto.qDot0_),
+    controller_
+    (
+        pto.controller_.valid() ? pto.controller_->clone().ptr() : nullptr
+    ),
+    controlled_(pto.controlled_)
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::restraints::jointPTO::start
+(
+    const rigidBodyModelState& state,
+    const rigidBodyModelWorkspace&
+)
+{
+    if (controller_.valid() && !committed_)
+    {
+        const label i = dofs_[0];
+        controller_->update
+        (
+            state.t(), state.deltaT(), state.q()[i], state.qDot()[i],
+            controlled_
+        );
+    }
+}
+
 
 void Foam::RBD::restraints::jointPTO::restrain
 (
@@ -133,10 +282,21 @@ void Foam::RBD::restraints::jointPTO::restrain
     const rigidBodyModelWorkspace&
 ) const
 {
+    // Held by the latch's motor, or free
+    if (latched() || declutched_)
+    {
+        return;
+    }
+
     forAll(dofs_, k)
     {
         const label i = dofs_[k];
         tau[i] += force(k, state.q()[i], state.qDot()[i]);
+    }
+    if (controller_.valid())
+    {
+        const label i = dofs_[0];
+        tau[i] += controlForce(state.q()[i], state.qDot()[i]);
     }
 }
 
@@ -169,12 +329,27 @@ void Foam::RBD::restraints::jointPTO::commit
     const rigidBodyModelWorkspace&
 )
 {
+    // The same state committed again: nothing to add, and the control
+    // already decided
+    if (committed_ && state.t() == t0_)
+    {
+        return;
+    }
+    t0_ = state.t();
+
     power_ = 0;
     forAll(dofs_, k)
     {
         const label i = dofs_[k];
         const scalar q = state.q()[i];
-        const scalar f = force(k, q, state.qDot()[i]);
+
+        // The force the step's accelerations were computed with: the
+        // latch's motor's while it holds, none while free, else the law's
+        const scalar f =
+            latched() ? latch_.force
+          : declutched_ ? 0
+          : force(k, q, state.qDot()[i])
+          + (controller_.valid() ? controlForce(q, state.qDot()[i]) : 0);
 
         // The trapezoidal rule over the step since the last commit
         if (committed_)
@@ -186,6 +361,26 @@ void Foam::RBD::restraints::jointPTO::commit
         powerDoF_[k] = -f*state.qDot()[i];
         power_ += powerDoF_[k];
     }
+
+    // The impulse that caught the joint (once)
+    if (latched())
+    {
+        work_ -= latch_.impulseWork;
+        latch_.impulseWork = 0;
+    }
+
+    // The next step's control
+    const scalar qDot = state.qDot()[dofs_[0]];
+    control(qDot, qDot0_, state.t(), state.deltaT());
+    qDot0_ = qDot;
+    if (controller_.valid())
+    {
+        controller_->update
+        (
+            state.t(), state.deltaT(), state.q()[dofs_[0]], qDot, controlled_
+        );
+    }
+
     committed_ = true;
 }
 
@@ -196,6 +391,25 @@ bool Foam::RBD::restraints::jointPTO::writeState(Ostream& os) const
     os.writeEntry("q", q0_);
     os.writeEntry("force", tau0_);
     os.writeEntry("power", power_);
+    os.writeEntry("powerDoF", powerDoF_);
+    os.writeEntry("t", t0_);
+    os.writeEntry("qDot", qDot0_);
+    os.writeEntry("latched", latch_.active);
+    os.writeEntry("latchStart", latchStart_);
+    os.writeEntry("declutched", declutched_);
+    os.writeEntry("declutchStart", declutchStart_);
+    if (controller_.valid())
+    {
+        os.writeEntry
+        (
+            "controlled",
+            FixedList<scalar, 4>
+            ({
+                controlled_.stiffness, controlled_.restPosition,
+                controlled_.damping, controlled_.force
+            })
+        );
+    }
     return true;
 }
 
@@ -213,6 +427,25 @@ void Foam::RBD::restraints::jointPTO::readState(const dictionary& dict)
         q0_ = q;
         tau0_ = f;
         dict.readIfPresent("power", power_);
+        scalarField p;
+        if (dict.readIfPresent("powerDoF", p) && p.size() == powerDoF_.size())
+        {
+            powerDoF_ = p;
+        }
+        dict.readIfPresent("t", t0_);
+        dict.readIfPresent("qDot", qDot0_);
+        dict.readIfPresent("latched", latch_.active);
+        dict.readIfPresent("latchStart", latchStart_);
+        dict.readIfPresent("declutched", declutched_);
+        dict.readIfPresent("declutchStart", declutchStart_);
+        FixedList<scalar, 4> c;
+        if (controller_.valid() && dict.readIfPresent("controlled", c))
+        {
+            controlled_.stiffness = c[0];
+            controlled_.restPosition = c[1];
+            controlled_.damping = c[2];
+            controlled_.force = c[3];
+        }
         committed_ = true;
     }
 }

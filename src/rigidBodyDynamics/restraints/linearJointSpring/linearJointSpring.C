@@ -39,7 +39,8 @@ namespace restraints
     addRigidBodyKeywords
     (
         restraint, linearJointSpring, "stiffness", "damping", "restPosition",
-        "forceLimit"
+        "forceLimit",
+        "latchTime", "declutchTime", "declutchVelocity", "controller"
     );
 }
 }

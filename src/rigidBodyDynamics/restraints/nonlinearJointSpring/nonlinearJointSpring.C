@@ -37,7 +37,8 @@ namespace restraints
     (
         restraint, nonlinearJointSpring, "stiffness", "damping",
         "restPosition", "quadraticDamping", "coulombFriction",
-        "coulombVelocity", "dampingForce"
+        "coulombVelocity", "dampingForce",
+        "latchTime", "declutchTime", "declutchVelocity", "controller"
     );
 }
 }

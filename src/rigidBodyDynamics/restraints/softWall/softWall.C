@@ -100,6 +100,17 @@ bool Foam::RBD::restraints::softWall::read(const dictionary& dict)
 {
     restraint::read(dict);
 
+    // A wall fixed in space: it has no body to move with
+    if (dict.found("anchorBody"))
+    {
+        FatalIOErrorInFunction(dict.lookup("anchorBody"))
+            << "Entry anchorBody of restraint " << name_ << ": a softWall is"
+            << " a wall fixed in space, its anchor a global point.  For a"
+            << " stop between two bodies use jointEndStop on the joint"
+            << " between them (a PTO's stroke)" << nl
+            << exit(FatalIOError);
+    }
+
     anchor_ = dict.get<vector>("anchor");
     wallNormal_ = readAxis(dict, "wallNormal");
     refAttachmentPt_ = dict.get<vector>("refAttachmentPt");
