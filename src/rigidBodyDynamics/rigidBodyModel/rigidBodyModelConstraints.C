@@ -35,6 +35,29 @@ Description
 using namespace Foam::RBD::spatialKernels;
 
 
+namespace
+{
+    // a & qDot with a's zeros skipped: a unit a gives its entry of qDot
+    // exactly
+    Foam::scalar sparseDot
+    (
+        const Foam::scalarField& a,
+        const Foam::scalarField& qDot
+    )
+    {
+        Foam::scalar r = 0;
+        forAll(a, j)
+        {
+            if (a[j] != 0)
+            {
+                r += a[j]*qDot[j];
+            }
+        }
+        return r;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::RBD::rigidBodyModel::rate
@@ -43,17 +66,7 @@ Foam::scalar Foam::RBD::rigidBodyModel::rate
     const scalarField& qDot
 ) const
 {
-    // The row's zeros skipped: a unit row gives its entry of qDot exactly
-    const scalarField& row = c.row;
-    scalar r = 0;
-    forAll(row, j)
-    {
-        if (row[j] != 0)
-        {
-            r += row[j]*qDot[j];
-        }
-    }
-    return r;
+    return sparseDot(c.row, qDot);
 }
 
 
@@ -63,16 +76,7 @@ Foam::scalar Foam::RBD::rigidBodyModel::motorRate
     const scalarField& qDot
 ) const
 {
-    const scalarField& motor = c.motor;
-    scalar r = 0;
-    forAll(motor, j)
-    {
-        if (motor[j] != 0)
-        {
-            r += motor[j]*qDot[j];
-        }
-    }
-    return r;
+    return sparseDot(c.motor, qDot);
 }
 
 
